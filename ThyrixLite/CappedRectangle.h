@@ -1,0 +1,28 @@
+#pragma once
+/// @file CappedRectangle.h
+/// @brief A capsule: a rectangle capped by two half-disks.
+
+#include <ThyrixLite/Primitive.h>
+
+namespace thyrix {
+
+/// A rectangle of length 2 l and width 2 R with a half-disk of radius R on each end, of uniform
+/// density. At `alpha = 0` its long axis lies along x, centred on `r`: the end-cap centres are
+/// `r -/+ (l, 0)`.
+class CappedRectangle : public Primitive {
+ public:
+  /// @param l half length of the straight part, @param R half width (the caps' radius)
+  /// @throws InvalidArgument naming "CappedRectangle.l", ".R" or ".mass" unless positive and finite
+  CappedRectangle(real l, real R, real mass);
+
+  /// Moment of inertia of a uniform capsule about its centre.
+  static real momentOfInertia(real l, real R, real mass);
+
+  /// World position of end-cap centre 0 (`-l` along the axis) or 1 (`+l`).
+  [[nodiscard]] Vector2 endPoint(int end) const;
+
+  void draw(GUI& gui) const override;
+  [[nodiscard]] std::string typeName() const override { return "CappedRectangle"; }
+};
+
+}  // namespace thyrix

@@ -1,0 +1,78 @@
+#pragma once
+/// @file ContactSolver.h
+/// @brief The contact LCP as the solvers see it: bodies, constraint rows, settings.
+///
+/// For contact k between bodies a and b with unit normal n (a to b) at point p, the row of
+/// the Jacobian is `J_k = [-n, -ka | n, kb]` with `ka = (p - c_a) x n`, `kb = (p - c_b) x n`.
+/// The solvers find forces f >= 0 with `w = J u >= c` and `f (w - c) = 0`, where
+/// `u = u0 + D^-1 J^T f` and `D = diag(m, m, I)` per body (DESIGN.md section 4).
+
+#include <ThyrixLite/ThyrixParameters.h>
+#include <ThyrixLite/Vector2.h>
+
+#include <cstdint>
+#include <type_traits>
+
+namespace thyrix {
+
+/// Which method solves the contact LCP.
+enum class ContactSolverKind : std::uint8_t {
+  Baraff,       ///< Baraff's (1994) pivoting method: exact up to round-off
+  GaussSeidel,  ///< projected Gauss-Seidel (Preda and Florian 2005): iterative
+};
+
+/// Tuning of the contact solvers.
+struct ContactSolverSettings {
+  /// Gauss-Seidel stops when no force changes the velocity of its contact by more than this (m/s).
+  real gaussSeidelTolerance = std::is_same_v<real, float> ? real(1e-6) : real(1e-10);
+  /// Gauss-Seidel stops after this many sweeps even if not converged.
+  int gaussSeidelMaxIterations = 200;
+  /// Over-relaxation factor of Gauss-Seidel, in (0, 2); 1 is plain Gauss-Seidel.
+  real relaxation = 1;
+  /// Islands with more contacts than this are solved by Gauss-Seidel even when Baraff is chosen
+  /// (Baraff's method works on a dense matrix of the island's contacts).
+  int baraffMaxContacts = 400;
+  /// Fraction of an overlap corrected per step (the elastic push apart), in (0, 1].
+  real penetrationCorrection = real(0.2);
+  /// Contacts are created while the gap is below this fraction of the smaller shape radius.
+  real speculativeFraction = real(0.25);
+};
+
+/// A body as the solvers see it: the velocity being solved for and the inverse quasistatic mass.
+/// Fixed bodies have zero inverse mass and inertia, so contacts never move them.
+struct SolverBody {
+  Vector2 v;             ///< linear velocity
+  real omega = 0;        ///< angular velocity
+  real inverseMass = 0;  ///< 1 / m, 0 when fixed
+  real inverseInertia = 0;  ///< 1 / I, 0 when fixed
+};
+
+/// One row of the LCP.
+struct ContactConstraint {
+  std::uint32_t a = 0;  ///< index of body A in the solver's bodies
+  std::uint32_t b = 0;  ///< index of body B
+  Vector2 normal;       ///< unit normal from A to B
+  real armA = 0;        ///< (p - c_a) x n
+  real armB = 0;        ///< (p - c_b) x n
+  real target = 0;      ///< c: the least allowed normal velocity
+  real force = 0;       ///< f: the normal force, the unknown
+
+  /// The normal relative velocity `w = J u` for the current body velocities.
+  [[nodiscard]] real normalVelocity(const SolverBody& bodyA, const SolverBody& bodyB) const {
+    return dot(normal, bodyB.v - bodyA.v) + armB * bodyB.omega - armA * bodyA.omega;
+  }
+  /// The diagonal entry `A_kk = J_k D^-1 J_k^T`.
+  [[nodiscard]] real selfResponse(const SolverBody& bodyA, const SolverBody& bodyB) const {
+    return bodyA.inverseMass + bodyA.inverseInertia * armA * armA + bodyB.inverseMass +
+           bodyB.inverseInertia * armB * armB;
+  }
+  /// Adds the body velocities caused by a change @p deltaForce of this contact's force.
+  void applyImpulse(real deltaForce, SolverBody& bodyA, SolverBody& bodyB) const {
+    bodyA.v -= normal * (deltaForce * bodyA.inverseMass);
+    bodyA.omega -= armA * deltaForce * bodyA.inverseInertia;
+    bodyB.v += normal * (deltaForce * bodyB.inverseMass);
+    bodyB.omega += armB * deltaForce * bodyB.inverseInertia;
+  }
+};
+
+}  // namespace thyrix

@@ -1,0 +1,35 @@
+#include <ThyrixLite/GaussSeidelSolver.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace thyrix {
+
+int GaussSeidelSolver::solve(std::span<const std::uint32_t> island,
+                             std::span<ContactConstraint> rows, std::span<SolverBody> bodies,
+                             const ContactSolverSettings& settings) {
+  int sweep = 0;
+  while (sweep < settings.gaussSeidelMaxIterations) {
+    ++sweep;
+    real largestChange = 0;  // in velocity units: |delta f| * A_kk
+    for (const std::uint32_t k : island) {
+      ContactConstraint& row = rows[k];
+      SolverBody& bodyA = bodies[row.a];
+      SolverBody& bodyB = bodies[row.b];
+      const real selfResponse = row.selfResponse(bodyA, bodyB);
+      const real residual = row.normalVelocity(bodyA, bodyB) - row.target;
+      // Clamp the accumulated force, not the increment.
+      const real newForce =
+          std::max(real(0), row.force - settings.relaxation * residual / selfResponse);
+      const real change = newForce - row.force;
+      if (change == 0) continue;
+      row.force = newForce;
+      row.applyImpulse(change, bodyA, bodyB);
+      largestChange = std::max(largestChange, std::abs(change) * selfResponse);
+    }
+    if (largestChange <= settings.gaussSeidelTolerance) break;
+  }
+  return sweep;
+}
+
+}  // namespace thyrix

@@ -1,0 +1,47 @@
+#include <ThyrixLite/InvalidArgument.h>
+#include <ThyrixLite/PhysicalObject.h>
+
+namespace thyrix {
+
+void PhysicalObject::computeDerivativesWithoutContacts() {
+  if (fixed) {
+    v = {};
+    omega = 0;
+  } else {
+    v = externalForce / m;
+    omega = externalTorque / I;
+  }
+  externalForce = {};
+  externalTorque = 0;
+}
+
+void PhysicalObject::control() {}
+
+void PhysicalObject::integrate(real dt) {
+  if (fixed) return;
+  r += v * dt;
+  alpha += omega * dt;
+}
+
+void PhysicalObject::validate() const {
+  const std::string type = typeName();
+  const auto field = [&](const char* name) { return type + "." + name; };
+  if (!std::isfinite(r.x) || !std::isfinite(r.y)) throw InvalidArgument(field("r"), "must be finite");
+  if (!std::isfinite(alpha)) throw InvalidArgument(field("alpha"), "must be finite");
+  if (!std::isfinite(externalForce.x) || !std::isfinite(externalForce.y))
+    throw InvalidArgument(field("externalForce"), "must be finite");
+  if (!std::isfinite(externalTorque)) throw InvalidArgument(field("externalTorque"), "must be finite");
+  if (!fixed) {
+    if (!(m > 0) || !std::isfinite(m))
+      throw InvalidArgument(field("m"), "must be positive and finite (got " + std::to_string(m) + ")");
+    if (!(I > 0) || !std::isfinite(I))
+      throw InvalidArgument(field("I"), "must be positive and finite (got " + std::to_string(I) + ")");
+  }
+}
+
+void PhysicalObject::applyForce(Vector2 force, Vector2 worldPoint) {
+  externalForce += force;
+  externalTorque += cross(worldPoint - r, force);
+}
+
+}  // namespace thyrix

@@ -1,0 +1,97 @@
+#pragma once
+/// @file PhysicalObject.h
+/// @brief A rigid body under quasistatic dynamics, `F = m v`.
+
+#include <ThyrixLite/ContactInfo.h>
+#include <ThyrixLite/GraphicalObject.h>
+#include <ThyrixLite/ThyrixParameters.h>
+#include <ThyrixLite/Vector2.h>
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace thyrix {
+
+class Primitive;
+
+/// A rigid body of the plane with quasistatic (Aristotelian) dynamics: its velocity is the
+/// force on it divided by its mass, `v = F / m` and `omega = torque / I`, so it stops the
+/// instant nothing pushes it.
+///
+/// The fields are public, as in the users' guide: set `r` and `alpha` before or after
+/// registering the object with a Simulator; add to `externalForce` and `externalTorque`
+/// (typically in control()) to push it during the next step. A body collides through its
+/// primitives(): a Circle or CappedRectangle is its own single primitive.
+///
+/// Objects are not copyable or movable: the simulator and contacts refer to them by address.
+class PhysicalObject : public GraphicalObject {
+ public:
+  PhysicalObject(const PhysicalObject&) = delete;
+  PhysicalObject& operator=(const PhysicalObject&) = delete;
+  ~PhysicalObject() override = default;
+
+  Vector2 r;          ///< position of the centre of mass, world coordinates (m)
+  Vector2 v;          ///< linear velocity (m/s), computed each step
+  real alpha = 0;     ///< orientation (rad, counter-clockwise)
+  real omega = 0;     ///< angular velocity (rad/s), computed each step
+  real m;             ///< quasistatic mass: force per unit velocity (N s/m)
+  real I;             ///< moment of inertia about the centre of mass: torque per unit rate
+  Vector2 externalForce;    ///< force accumulated for the next step, reset after use (N)
+  real externalTorque = 0;  ///< torque accumulated for the next step, reset after use (N m)
+  Vector2 boxMin;     ///< lower corner of the axis-aligned bounding box, updated each step
+  Vector2 boxMax;     ///< upper corner of the axis-aligned bounding box, updated each step
+  std::vector<ContactInfo> contacts;  ///< this step's contacts of this object
+  bool fixed = false;  ///< a fixed object never moves: it has infinite mass
+
+  /// Phase 5 of a step: velocities from the accumulated external force and torque alone,
+  /// `v = F / m`, `omega = torque / I`; the accumulators are then reset to zero.
+  virtual void computeDerivativesWithoutContacts();
+
+  /// Phase 7 of a step: sensors to controller to motor forces for the next step.
+  /// The default does nothing (a passive object).
+  virtual void control();
+
+  /// Phase 8 of a step: moves the body by its velocity for @p dt (explicit Euler).
+  virtual void integrate(real dt);
+
+  /// Checks the state before registration; throws InvalidArgument naming the field.
+  virtual void validate() const;
+
+  /// The class name used in error messages, e.g. "Circle".
+  [[nodiscard]] virtual std::string typeName() const { return "PhysicalObject"; }
+
+  /// The collision geometry of this body.
+  [[nodiscard]] std::span<Primitive* const> primitives() const { return primitives_; }
+
+  /// 1 / m, or 0 for a fixed body.
+  [[nodiscard]] real inverseMass() const { return fixed ? real(0) : 1 / m; }
+  /// 1 / I, or 0 for a fixed body.
+  [[nodiscard]] real inverseInertia() const { return fixed ? real(0) : 1 / I; }
+
+  /// Adds @p force applied at @p worldPoint to the accumulators (force and its torque).
+  void applyForce(Vector2 force, Vector2 worldPoint);
+  /// A point given in the body frame, in world coordinates.
+  [[nodiscard]] Vector2 toWorld(Vector2 localPoint) const { return r + localPoint.rotated(alpha); }
+  /// A world point in the body frame.
+  [[nodiscard]] Vector2 toLocal(Vector2 worldPoint) const {
+    return (worldPoint - r).rotated(-alpha);
+  }
+  /// Velocity of the body's material point at @p worldPoint.
+  [[nodiscard]] Vector2 velocityAt(Vector2 worldPoint) const {
+    return v + cross(omega, worldPoint - r);
+  }
+
+ protected:
+  /// @param mass quasistatic mass, @param momentOfInertia about the centre of mass.
+  /// Subclasses validate them, naming their own fields.
+  PhysicalObject(real mass, real momentOfInertia) : m(mass), I(momentOfInertia) {}
+
+  /// Makes @p primitive part of this body's collision geometry.
+  void addPrimitive(Primitive& primitive) { primitives_.push_back(&primitive); }
+
+ private:
+  std::vector<Primitive*> primitives_;
+};
+
+}  // namespace thyrix

@@ -1,0 +1,68 @@
+#pragma once
+/// @file Primitive.h
+/// @brief The base of the collision shapes: Circle, CappedRectangle and Border.
+
+#include <ThyrixLite/PhysicalObject.h>
+
+#include <cstdint>
+
+namespace thyrix {
+
+/// The kinds of primitive, in the order the narrow phase pairs them (the lower kind is A).
+enum class ShapeType : std::uint8_t {
+  HalfPlane = 0,  ///< a Border
+  Circle = 1,     ///< a Circle
+  Capsule = 2,    ///< a CappedRectangle
+};
+
+/// A primitive shape. It is a body of its own when registered alone; inside a composed body it
+/// is a part, placed at `localPosition` and `localAngle` in its owner's frame, and its own
+/// `r` and `alpha` follow the owner (the simulator updates them each step).
+class Primitive : public PhysicalObject {
+ public:
+  /// The kind of shape.
+  [[nodiscard]] ShapeType shapeType() const { return shapeType_; }
+  /// Circle radius, or capsule half width R; 0 for a border.
+  [[nodiscard]] real radius() const { return radius_; }
+  /// Capsule half length l of the central segment; 0 for other shapes.
+  [[nodiscard]] real halfLength() const { return halfLength_; }
+
+  /// The body this primitive moves with: itself, or the composed body it is part of.
+  [[nodiscard]] PhysicalObject& owner() const { return *owner_; }
+  /// Position in the owner's frame (zero for a standalone primitive).
+  [[nodiscard]] Vector2 localPosition() const { return localPosition_; }
+  /// Orientation in the owner's frame (zero for a standalone primitive).
+  [[nodiscard]] real localAngle() const { return localAngle_; }
+
+  /// Places this primitive in @p owner's frame (used by composed bodies when adding a part).
+  void attachTo(PhysicalObject& owner, Vector2 localPosition, real localAngle) {
+    owner_ = &owner;
+    localPosition_ = localPosition;
+    localAngle_ = localAngle;
+  }
+  /// Moves `r` and `alpha` to follow the owner (no-op for a standalone primitive).
+  void followOwner() {
+    if (owner_ == this) return;
+    r = owner_->toWorld(localPosition_);
+    alpha = owner_->alpha + localAngle_;
+  }
+
+ protected:
+  Primitive(ShapeType type, real radius, real halfLength, real mass, real momentOfInertia)
+      : PhysicalObject(mass, momentOfInertia),
+        shapeType_(type),
+        radius_(radius),
+        halfLength_(halfLength) {
+    addPrimitive(*this);
+  }
+
+ private:
+  ShapeType shapeType_;
+  real radius_;
+  real halfLength_;
+  PhysicalObject* owner_ = this;
+  Vector2 localPosition_;
+  real localAngle_ = 0;
+};
+
+}  // namespace thyrix

@@ -1,0 +1,282 @@
+#include <ThyrixLite/Border.h>
+#include <ThyrixLite/GaussSeidelSolver.h>
+#include <ThyrixLite/InvalidArgument.h>
+#include <ThyrixLite/NarrowPhase.h>
+#include <ThyrixLite/Simulator.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace thyrix {
+
+Simulator::Simulator(real timestep) : timestep_(timestep) {
+  requirePositive(timestep, "Simulator.timestep");
+}
+
+void Simulator::setTimestep(real timestep) {
+  requirePositive(timestep, "Simulator.timestep");
+  timestep_ = timestep;
+}
+
+void Simulator::prepareRegistration(PhysicalObject& object, std::size_t /*index*/) {
+  // Reserve everything registration will append to, so completing it cannot fail.
+  const std::size_t added = object.primitives().size();
+  shapes_.reserve(shapes_.size() + added);
+  geometry_.reserve(shapes_.size() + added);
+  borderShapes_.reserve(borderShapes_.size() + added);
+  gridShapes_.reserve(gridShapes_.size() + added);
+  gridBoxes_.reserve(gridShapes_.size() + added);
+  bodies_.reserve(objects.size() + 1);
+  movable_.reserve(objects.size() + 1);
+}
+
+void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) noexcept {
+  for (Primitive* primitive : object.primitives()) {
+    const auto shape = static_cast<std::uint32_t>(shapes_.size());
+    shapes_.push_back({primitive, static_cast<std::uint32_t>(index), primitive->shapeType()});
+    geometry_.push_back({});
+    if (primitive->shapeType() == ShapeType::HalfPlane) {
+      borderShapes_.push_back(shape);
+    } else {
+      gridShapes_.push_back(shape);
+      gridBoxes_.push_back({});
+    }
+  }
+  bodies_.push_back({});
+  movable_.push_back(0);
+}
+
+void Simulator::advanceTime() {
+  eraseContacts();
+  detectContacts();
+  indexContacts();
+  applyMouseForce();
+  for (PhysicalObject& object : objects) object.computeDerivativesWithoutContacts();
+  solveContacts();
+  for (PhysicalObject& object : objects) object.control();
+  integrator.integrate(objects, timestep_);
+  ++stepCount_;
+  time_ += timestep_;
+}
+
+void Simulator::eraseContacts() {
+  contacts.items_.clear();
+  for (PhysicalObject& object : objects) object.contacts.clear();
+}
+
+void Simulator::updateGeometry() {
+  const real fraction = settings_.speculativeFraction;
+  for (PhysicalObject& object : objects) {
+    object.boxMin = {realMax, realMax};
+    object.boxMax = {-realMax, -realMax};
+  }
+  for (std::size_t s = 0; s < shapes_.size(); ++s) {
+    Primitive& primitive = *shapes_[s].primitive;
+    primitive.followOwner();
+    ShapeGeometry& g = geometry_[s];
+    g.radius = primitive.radius();
+    g.margin = fraction * g.radius;
+    Vector2 lower;
+    Vector2 upper;
+    switch (shapes_[s].type) {
+      case ShapeType::HalfPlane:
+        g.p0 = primitive.r;
+        g.p1 = static_cast<const Border&>(primitive).normal();
+        continue;  // unbounded: no box
+      case ShapeType::Circle:
+        g.p0 = primitive.r;
+        lower = g.p0 - Vector2{g.radius, g.radius};
+        upper = g.p0 + Vector2{g.radius, g.radius};
+        break;
+      case ShapeType::Capsule: {
+        const Vector2 axis = Vector2{primitive.halfLength(), 0}.rotated(primitive.alpha);
+        g.p0 = primitive.r - axis;
+        g.p1 = primitive.r + axis;
+        lower = Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} -
+                Vector2{g.radius, g.radius};
+        upper = Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} +
+                Vector2{g.radius, g.radius};
+        break;
+      }
+    }
+    PhysicalObject& body = objects[shapes_[s].body];
+    body.boxMin = {std::min(body.boxMin.x, lower.x), std::min(body.boxMin.y, lower.y)};
+    body.boxMax = {std::max(body.boxMax.x, upper.x), std::max(body.boxMax.y, upper.y)};
+  }
+  for (std::size_t i = 0; i < gridShapes_.size(); ++i) {
+    const std::uint32_t s = gridShapes_[i];
+    // The shape's own box (not the body's), widened by its speculative margin.
+    const ShapeGeometry& g = geometry_[s];
+    const Vector2 reach{g.radius + g.margin, g.radius + g.margin};
+    if (shapes_[s].type == ShapeType::Circle) {
+      gridBoxes_[i] = {g.p0 - reach, g.p0 + reach};
+    } else {
+      gridBoxes_[i] = {Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} - reach,
+                       Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} + reach};
+    }
+  }
+}
+
+void Simulator::detectContacts() {
+  updateGeometry();
+  broadPhase_.findPairs(gridBoxes_, pairs_);
+  for (const BoxPair& pair : pairs_) addContacts(gridShapes_[pair.first], gridShapes_[pair.second]);
+  for (const std::uint32_t border : borderShapes_)
+    for (const std::uint32_t shape : gridShapes_) addContacts(border, shape);
+  statistics_.contacts = contacts.size();
+}
+
+void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
+  if (shapes_[shapeB].type < shapes_[shapeA].type) std::swap(shapeA, shapeB);
+  const Shape& a = shapes_[shapeA];
+  const Shape& b = shapes_[shapeB];
+  if (a.body == b.body) return;
+  PhysicalObject& bodyA = objects[a.body];
+  PhysicalObject& bodyB = objects[b.body];
+  if (bodyA.fixed && bodyB.fixed) return;
+  const ShapeGeometry& ga = geometry_[shapeA];
+  const ShapeGeometry& gb = geometry_[shapeB];
+  const real margin = a.type == ShapeType::HalfPlane ? gb.margin : std::min(ga.margin, gb.margin);
+
+  Manifold manifold;
+  switch (a.type) {
+    case ShapeType::HalfPlane:
+      manifold = b.type == ShapeType::Circle
+                     ? collideHalfPlaneCircle(ga.p0, ga.p1, gb.p0, gb.radius, margin)
+                     : collideHalfPlaneCapsule(ga.p0, ga.p1, gb.p0, gb.p1, gb.radius, margin);
+      break;
+    case ShapeType::Circle:
+      manifold = b.type == ShapeType::Circle
+                     ? collideCircles(ga.p0, ga.radius, gb.p0, gb.radius, margin)
+                     : collideCircleCapsule(ga.p0, ga.radius, gb.p0, gb.p1, gb.radius, margin);
+      break;
+    case ShapeType::Capsule:
+      manifold = collideCapsules(ga.p0, ga.p1, ga.radius, gb.p0, gb.p1, gb.radius, margin);
+      break;
+  }
+  for (int i = 0; i < manifold.count; ++i) {
+    const ManifoldPoint& p = manifold.points[i];
+    GlobalContactInfo contact;
+    contact.objectA = &bodyA;
+    contact.objectB = &bodyB;
+    contact.primitiveA = a.primitive;
+    contact.primitiveB = b.primitive;
+    contact.bodyA = a.body;
+    contact.bodyB = b.body;
+    contact.shapeA = shapeA;
+    contact.shapeB = shapeB;
+    contact.feature = p.feature;
+    contact.point = p.point;
+    contact.normal = manifold.normal;
+    contact.depth = p.depth;
+    contacts.items_.push_back(contact);
+  }
+}
+
+void Simulator::indexContacts() {
+  for (std::uint32_t k = 0; k < contacts.size(); ++k) {
+    const GlobalContactInfo& c = contacts.items_[k];
+    c.objectA->contacts.push_back(
+        {k, c.objectB, c.primitiveA, c.primitiveB, c.point, -c.normal, c.depth, 0});
+    c.objectB->contacts.push_back(
+        {k, c.objectA, c.primitiveB, c.primitiveA, c.point, c.normal, c.depth, 0});
+  }
+}
+
+void Simulator::startDrag(PhysicalObject& object, Vector2 grabPoint) {
+  requireFinite(grabPoint, "Simulator.startDrag.grabPoint");
+  PhysicalObject* body = &object;
+  if (auto* primitive = dynamic_cast<Primitive*>(&object)) body = &primitive->owner();
+  if (std::none_of(objects.begin(), objects.end(),
+                   [body](const PhysicalObject& o) { return &o == body; }))
+    throw InvalidArgument("Simulator.startDrag.object", "is not registered with this simulator");
+  dragged_ = body;
+  dragLocalPoint_ = body->toLocal(grabPoint);
+  dragTarget_ = grabPoint;
+}
+
+void Simulator::dragTo(Vector2 target) {
+  requireFinite(target, "Simulator.dragTo.target");
+  dragTarget_ = target;
+}
+
+void Simulator::applyMouseForce() {
+  if (dragged_ == nullptr || dragged_->fixed) return;
+  PhysicalObject& body = *dragged_;
+  const Vector2 point = body.toWorld(dragLocalPoint_);
+  const Vector2 wanted = (dragTarget_ - point) * (dragResponse / timestep_);
+  // The grabbed point moves at K F for a force F there, K = m^-1 Id + I^-1 q q^T with
+  // q = perp(point - r): solve K F = wanted so the point, not the centre, heads to the mouse.
+  const Vector2 q = (point - body.r).perpendicular();
+  const real im = body.inverseMass();
+  const real ii = body.inverseInertia();
+  const real kxx = im + ii * q.x * q.x;
+  const real kxy = ii * q.x * q.y;
+  const real kyy = im + ii * q.y * q.y;
+  const real det = kxx * kyy - kxy * kxy;
+  const Vector2 force{(kyy * wanted.x - kxy * wanted.y) / det,
+                      (kxx * wanted.y - kxy * wanted.x) / det};
+  body.applyForce(force, point);
+}
+
+void Simulator::solveContacts() {
+  statistics_.islands = statistics_.solvedIslands = 0;
+  statistics_.gaussSeidelSweeps = statistics_.baraffPivots = statistics_.baraffFallbacks = 0;
+  if (contacts.empty()) return;
+
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const PhysicalObject& object = objects[i];
+    bodies_[i] = {object.v, object.omega, object.inverseMass(), object.inverseInertia()};
+    movable_[i] = object.fixed ? 0 : 1;
+  }
+  const real dt = timestep_;
+  const real correction = settings_.penetrationCorrection;
+  rows_.resize(contacts.size());
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const GlobalContactInfo& c = contacts.items_[k];
+    ContactConstraint& row = rows_[k];
+    row.a = c.bodyA;
+    row.b = c.bodyB;
+    row.normal = c.normal;
+    row.armA = cross(c.point - c.objectA->r, c.normal);
+    row.armB = cross(c.point - c.objectB->r, c.normal);
+    // Overlap: separate at a fraction of the depth per step; gap: approach at most by the gap.
+    row.target = c.depth > 0 ? correction * c.depth / dt : c.depth / dt;
+    row.force = 0;
+  }
+
+  islands_.build(rows_, movable_);
+  statistics_.islands = islands_.count();
+  for (std::size_t i = 0; i < islands_.count(); ++i) solveIsland(islands_.island(i));
+
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    PhysicalObject& object = objects[i];
+    if (object.fixed) continue;
+    object.v = bodies_[i].v;
+    object.omega = bodies_[i].omega;
+  }
+  for (std::size_t k = 0; k < contacts.size(); ++k) contacts.items_[k].force = rows_[k].force;
+  for (PhysicalObject& object : objects)
+    for (ContactInfo& info : object.contacts) info.force = rows_[info.index].force;
+}
+
+void Simulator::solveIsland(std::span<const std::uint32_t> island) {
+  // An island whose contacts all hold without force needs no solve: its bodies keep u0.
+  const bool satisfied = std::all_of(island.begin(), island.end(), [this](std::uint32_t k) {
+    const ContactConstraint& row = rows_[k];
+    return row.normalVelocity(bodies_[row.a], bodies_[row.b]) >= row.target;
+  });
+  if (satisfied) return;
+  ++statistics_.solvedIslands;
+  if (solverKind_ == ContactSolverKind::Baraff &&
+      island.size() <= static_cast<std::size_t>(settings_.baraffMaxContacts)) {
+    const bool solved = baraff_.solve(island, rows_, bodies_);
+    statistics_.baraffPivots += static_cast<std::size_t>(baraff_.lastPivotCount());
+    if (solved) return;
+    ++statistics_.baraffFallbacks;
+  }
+  statistics_.gaussSeidelSweeps +=
+      static_cast<std::size_t>(GaussSeidelSolver::solve(island, rows_, bodies_, settings_));
+}
+
+}  // namespace thyrix

@@ -1,0 +1,145 @@
+#pragma once
+/// @file Simulator.h
+/// @brief Time stepping of a World: contacts, the contact LCP, control and integration.
+
+#include <ThyrixLite/BaraffSolver.h>
+#include <ThyrixLite/BroadPhase.h>
+#include <ThyrixLite/ContactSolver.h>
+#include <ThyrixLite/Integrator.h>
+#include <ThyrixLite/Islands.h>
+#include <ThyrixLite/ObjectList.h>
+#include <ThyrixLite/Primitive.h>
+#include <ThyrixLite/World.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace thyrix {
+
+/// What the last step did, for monitoring and benchmarks.
+struct StepStatistics {
+  std::size_t contacts = 0;          ///< contact points detected
+  std::size_t islands = 0;           ///< islands with at least one contact
+  std::size_t solvedIslands = 0;     ///< islands whose contacts needed forces
+  std::size_t gaussSeidelSweeps = 0; ///< sweeps summed over the islands Gauss-Seidel solved
+  std::size_t baraffPivots = 0;      ///< pivots summed over the islands Baraff solved
+  std::size_t baraffFallbacks = 0;   ///< islands Baraff gave to Gauss-Seidel
+};
+
+/// A World that advances in time with quasistatic dynamics.
+///
+/// One call of advanceTime() runs, in order (DESIGN.md section 3):
+/// 1. erase the last step's contacts; 2. detectContacts(); 3. indexContacts();
+/// 4. applyMouseForce(); 5. each object's computeDerivativesWithoutContacts();
+/// 6. solveContacts(); 7. each object's control(); 8. integrator.integrate().
+/// The phases are public so that a program can run its own variant of the step.
+///
+/// A simulator owns everything it uses (no global state): worlds in different threads are
+/// independent, and the same scene gives bit-identical runs.
+class Simulator : public World {
+ public:
+  /// @throws InvalidArgument naming "Simulator.timestep" unless positive and finite
+  explicit Simulator(real timestep = real(0.01));
+
+  /// This step's contacts (kept until the next step starts, for drawing).
+  ContactList contacts;
+  /// Moves the objects in phase 8.
+  Integrator integrator;
+
+  /// Advances the world by one time step.
+  void advanceTime();
+
+  /// Phase 2: updates bounding boxes, finds the contacts (broad then narrow phase).
+  void detectContacts();
+  /// Phase 3: lists each contact in its two objects' `contacts`.
+  void indexContacts();
+  /// Phase 4: while dragging, adds the force that pulls the grabbed point to the mouse.
+  void applyMouseForce();
+  /// Phase 6: contact forces (the chosen solver, island by island), then final velocities.
+  void solveContacts();
+
+  /// The time step (s).
+  [[nodiscard]] real timestep() const { return timestep_; }
+  /// @throws InvalidArgument naming "Simulator.timestep" unless positive and finite
+  void setTimestep(real timestep);
+  /// Steps done so far.
+  [[nodiscard]] std::uint64_t stepCount() const { return stepCount_; }
+  /// Simulated time so far (s).
+  [[nodiscard]] double time() const { return time_; }
+
+  /// Chooses the method that solves the contact LCP (Baraff by default).
+  void setContactSolver(ContactSolverKind kind) { solverKind_ = kind; }
+  /// The method that solves the contact LCP.
+  [[nodiscard]] ContactSolverKind contactSolver() const { return solverKind_; }
+  /// Solver tuning, readable and writable.
+  ContactSolverSettings& solverSettings() { return settings_; }
+  [[nodiscard]] const ContactSolverSettings& solverSettings() const { return settings_; }
+  /// What the last step did.
+  [[nodiscard]] const StepStatistics& statistics() const { return statistics_; }
+
+  /// Grabs @p object at @p grabPoint (world coordinates); a part grabs its whole body.
+  /// @throws InvalidArgument naming "Simulator.startDrag.object" if the object is not in this
+  ///         world, or "Simulator.startDrag.grabPoint" if the point is not finite
+  void startDrag(PhysicalObject& object, Vector2 grabPoint);
+  /// Moves the mouse target to @p target (world coordinates).
+  /// @throws InvalidArgument naming "Simulator.dragTo.target" if it is not finite
+  void dragTo(Vector2 target);
+  /// Releases the grabbed object.
+  void stopDrag() { dragged_ = nullptr; }
+  /// The grabbed body, or nullptr.
+  [[nodiscard]] PhysicalObject* draggedObject() const { return dragged_; }
+  /// Fraction of the distance to the mouse that a free dragged point covers per step, in (0, 1].
+  real dragResponse = real(0.5);
+
+ protected:
+  void prepareRegistration(PhysicalObject& object, std::size_t index) override;
+  void completeRegistration(PhysicalObject& object, std::size_t index) noexcept override;
+
+ private:
+  /// A primitive as the collision pipeline sees it.
+  struct Shape {
+    Primitive* primitive;
+    std::uint32_t body;  // index in objects
+    ShapeType type;
+  };
+  /// World geometry of a shape this step: circle centre in p0; capsule ends p0, p1;
+  /// half-plane point p0 and normal p1.
+  struct ShapeGeometry {
+    Vector2 p0;
+    Vector2 p1;
+    real radius;
+    real margin;
+  };
+
+  void eraseContacts();
+  void updateGeometry();
+  void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);
+  void solveIsland(std::span<const std::uint32_t> island);
+
+  real timestep_;
+  std::uint64_t stepCount_ = 0;
+  double time_ = 0;
+  ContactSolverKind solverKind_ = ContactSolverKind::Baraff;
+  ContactSolverSettings settings_;
+  StepStatistics statistics_;
+
+  std::vector<Shape> shapes_;
+  std::vector<ShapeGeometry> geometry_;
+  std::vector<std::uint32_t> borderShapes_;  // half-planes: tested against every shape
+  std::vector<std::uint32_t> gridShapes_;    // the others, in the broad phase
+  std::vector<BoundingBox> gridBoxes_;
+  std::vector<BoxPair> pairs_;
+  BroadPhase broadPhase_;
+
+  std::vector<SolverBody> bodies_;
+  std::vector<std::uint8_t> movable_;
+  std::vector<ContactConstraint> rows_;
+  Islands islands_;
+  BaraffSolver baraff_;
+
+  PhysicalObject* dragged_ = nullptr;
+  Vector2 dragLocalPoint_;
+  Vector2 dragTarget_;
+};
+
+}  // namespace thyrix
