@@ -191,6 +191,10 @@ void Simulator::startDrag(PhysicalObject& object, Vector2 grabPoint) {
                    [body](const PhysicalObject& o) { return &o == body; }))
     throw InvalidArgument("Simulator.startDrag.object", "is not registered with this simulator");
   dragged_ = body;
+  real smallest = realMax;
+  for (const Primitive* primitive : body->primitives())
+    if (primitive->radius() > 0) smallest = std::min(smallest, primitive->radius());
+  dragMaxStep_ = smallest;
   dragLocalPoint_ = body->toLocal(grabPoint);
   dragTarget_ = grabPoint;
 }
@@ -204,7 +208,10 @@ void Simulator::applyMouseForce() {
   if (dragged_ == nullptr || dragged_->fixed) return;
   PhysicalObject& body = *dragged_;
   const Vector2 point = body.toWorld(dragLocalPoint_);
-  const Vector2 wanted = (dragTarget_ - point) * (dragResponse / timestep_);
+  Vector2 step = (dragTarget_ - point) * dragResponse;
+  const real longest = dragMaxStepFraction * dragMaxStep_;
+  if (step.length() > longest) step = step * (longest / step.length());
+  const Vector2 wanted = step / timestep_;
   // The grabbed point moves at K F for a force F there, K = m^-1 Id + I^-1 q q^T with
   // q = perp(point - r): solve K F = wanted so the point, not the centre, heads to the mouse.
   const Vector2 q = (point - body.r).perpendicular();

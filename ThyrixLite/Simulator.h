@@ -90,6 +90,9 @@ class Simulator : public World {
   [[nodiscard]] PhysicalObject* draggedObject() const { return dragged_; }
   /// Fraction of the distance to the mouse that a free dragged point covers per step, in (0, 1].
   real dragResponse = real(0.5);
+  /// Longest step of the dragged point, as a fraction of the dragged body's smallest radius:
+  /// a far mouse pulls the body at a bounded speed, so it cannot jump through other objects.
+  real dragMaxStepFraction = real(0.2);
 
  protected:
   void prepareRegistration(PhysicalObject& object, std::size_t index) override;
@@ -138,6 +141,7 @@ class Simulator : public World {
   BaraffSolver baraff_;
 
   PhysicalObject* dragged_ = nullptr;
+  real dragMaxStep_ = 0;  // metres per step, from the dragged body's size
   Vector2 dragLocalPoint_;
   Vector2 dragTarget_;
 };

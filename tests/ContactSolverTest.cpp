@@ -1,2 +1,254 @@
+// The two contact solvers on the same LCPs: complementarity, agreement of body velocities, and
+// an independent reference that enumerates active sets of small problems.
+
+#include "TestTolerances.h"
+
+#include <Scenes.h>
+#include <ThyrixLite/BaraffSolver.h>
+#include <ThyrixLite/Border.h>
+#include <ThyrixLite/CappedRectangle.h>
+#include <ThyrixLite/Circle.h>
+#include <ThyrixLite/GaussSeidelSolver.h>
+#include <ThyrixLite/Islands.h>
+#include <ThyrixLite/Simulator.h>
+#include <Tools/MTRandom.h>
+
 #include <gtest/gtest.h>
-TEST(Placeholder, Pending) { SUCCEED(); }
+
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+namespace thyrix {
+namespace {
+
+/// An LCP taken from a simulator's state, built here from the public contacts (independently
+/// of the simulator's own assembly).
+struct Problem {
+  std::vector<SolverBody> bodies;
+  std::vector<ContactConstraint> rows;
+  std::vector<std::uint32_t> all;
+};
+
+/// A random mixed pile jammed into a corner and pushed further in, with u0 from the push.
+Problem makeProblem(std::uint32_t seed, int count, Simulator& simulator) {
+  const auto bodies = scenes::addMixedPile(simulator, count, seed);
+  MTRandom random(seed + 1000);
+  for (PhysicalObject* body : bodies) {
+    body->externalForce = {static_cast<real>(random.uniform(-3, 0.5)), static_cast<real>(random.uniform(-3, 0.5))};
+    body->externalTorque = static_cast<real>(random.uniform(-0.5, 0.5));
+  }
+  simulator.detectContacts();
+  for (PhysicalObject& object : simulator.objects) object.computeDerivativesWithoutContacts();
+
+  Problem problem;
+  for (const PhysicalObject& object : simulator.objects)
+    problem.bodies.push_back({object.v, object.omega, object.inverseMass(), object.inverseInertia()});
+  const real dt = simulator.timestep();
+  for (const GlobalContactInfo& c : simulator.contacts) {
+    ContactConstraint row;
+    row.a = c.bodyA;
+    row.b = c.bodyB;
+    row.normal = c.normal;
+    row.armA = cross(c.point - c.objectA->r, c.normal);
+    row.armB = cross(c.point - c.objectB->r, c.normal);
+    row.target = c.depth > 0 ? simulator.solverSettings().penetrationCorrection * c.depth / dt : c.depth / dt;
+    problem.rows.push_back(row);
+  }
+  problem.all.resize(problem.rows.size());
+  std::iota(problem.all.begin(), problem.all.end(), 0u);
+  return problem;
+}
+
+/// Scale of the velocities in a problem, for relative tolerances.
+real velocityScale(const Problem& p) {
+  real scale = 1;
+  for (const SolverBody& b : p.bodies) scale = std::max({scale, b.v.length(), std::abs(b.omega)});
+  for (const ContactConstraint& r : p.rows) scale = std::max(scale, std::abs(r.target));
+  return scale;
+}
+
+void expectComplementarity(const Problem& p, real tolerance) {
+  for (const ContactConstraint& row : p.rows) {
+    const real slack = row.normalVelocity(p.bodies[row.a], p.bodies[row.b]) - row.target;
+    EXPECT_GE(row.force, 0);
+    EXPECT_GE(slack, -tolerance) << "w >= c";
+    // f (w - c) = 0, with f measured as the velocity it causes at its own contact.
+    EXPECT_LE(std::abs(row.force * row.selfResponse(p.bodies[row.a], p.bodies[row.b]) * slack),
+              tolerance * (tolerance + std::abs(slack) + row.force * row.selfResponse(p.bodies[row.a], p.bodies[row.b])))
+        << "complementarity";
+    if (row.force > tolerance) {
+      EXPECT_NEAR(slack, 0, tolerance);
+    }
+  }
+}
+
+void expectSameVelocities(const Problem& x, const Problem& y, real tolerance) {
+  for (std::size_t i = 0; i < x.bodies.size(); ++i) {
+    EXPECT_NEAR(x.bodies[i].v.x, y.bodies[i].v.x, tolerance) << "body " << i;
+    EXPECT_NEAR(x.bodies[i].v.y, y.bodies[i].v.y, tolerance) << "body " << i;
+    EXPECT_NEAR(x.bodies[i].omega, y.bodies[i].omega, tolerance) << "body " << i;
+  }
+}
+
+ContactSolverSettings convergedSettings() {
+  ContactSolverSettings settings;
+  settings.gaussSeidelMaxIterations = 200000;
+  settings.gaussSeidelTolerance = test::isFloat ? real(1e-6) : real(1e-13);
+  return settings;
+}
+
+/// Reference: enumerate the active sets S of a small LCP; for each with A_SS invertible solve
+/// A_SS f_S = c_S - b_S by Gaussian elimination and keep the first complementary solution.
+/// Returns the body velocities it implies.
+bool referenceSolve(Problem& p) {
+  const std::size_t m = p.rows.size();
+  std::vector<std::vector<double>> A(m, std::vector<double>(m));
+  std::vector<double> b(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    // Column i of A: the velocity change at every contact caused by a unit force at i.
+    std::vector<SolverBody> unit = p.bodies;
+    for (SolverBody& body : unit) body.v = {}, body.omega = 0;
+    p.rows[i].applyImpulse(1, unit[p.rows[i].a], unit[p.rows[i].b]);
+    for (std::size_t j = 0; j < m; ++j) A[j][i] = p.rows[j].normalVelocity(unit[p.rows[j].a], unit[p.rows[j].b]);
+    b[i] = p.rows[i].normalVelocity(p.bodies[p.rows[i].a], p.bodies[p.rows[i].b]) - p.rows[i].target;
+  }
+  for (std::uint32_t mask = 0; mask < (1u << m); ++mask) {
+    std::vector<std::size_t> set;
+    for (std::size_t i = 0; i < m; ++i)
+      if (mask & (1u << i)) set.push_back(i);
+    const std::size_t n = set.size();
+    std::vector<std::vector<double>> M(n, std::vector<double>(n + 1));
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = 0; j < n; ++j) M[i][j] = A[set[i]][set[j]];
+      M[i][n] = -b[set[i]];
+    }
+    bool singular = false;
+    for (std::size_t col = 0; col < n && !singular; ++col) {
+      std::size_t pivot = col;
+      for (std::size_t r = col + 1; r < n; ++r)
+        if (std::abs(M[r][col]) > std::abs(M[pivot][col])) pivot = r;
+      if (std::abs(M[pivot][col]) < 1e-12) singular = true;
+      std::swap(M[col], M[pivot]);
+      for (std::size_t r = 0; r < n && !singular; ++r) {
+        if (r == col) continue;
+        const double factor = M[r][col] / M[col][col];
+        for (std::size_t k = col; k <= n; ++k) M[r][k] -= factor * M[col][k];
+      }
+    }
+    if (singular) continue;
+    std::vector<double> f(m, 0);
+    bool valid = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      f[set[i]] = M[i][n] / M[i][i];
+      if (f[set[i]] < -1e-9) valid = false;
+    }
+    for (std::size_t i = 0; i < m && valid; ++i) {
+      double w = b[i];
+      for (std::size_t j = 0; j < m; ++j) w += A[i][j] * f[j];
+      if (w < -1e-9) valid = false;
+    }
+    if (!valid) continue;
+    for (std::size_t i = 0; i < m; ++i) {
+      p.rows[i].force = static_cast<real>(f[i]);
+      p.rows[i].applyImpulse(static_cast<real>(f[i]), p.bodies[p.rows[i].a], p.bodies[p.rows[i].b]);
+    }
+    return true;
+  }
+  return false;
+}
+
+class RandomPile : public ::testing::TestWithParam<std::uint32_t> {};
+
+TEST_P(RandomPile, BothSolversSatisfyComplementarityAndAgreeOnVelocities) {
+  Simulator simulator;
+  const Problem original = makeProblem(GetParam(), 30, simulator);
+  ASSERT_GT(original.rows.size(), 10u) << "the pile should be in contact";
+
+  Problem baraff = original;
+  BaraffSolver solver;
+  ASSERT_TRUE(solver.solve(baraff.all, baraff.rows, baraff.bodies));
+  Problem gaussSeidel = original;
+  GaussSeidelSolver::solve(gaussSeidel.all, gaussSeidel.rows, gaussSeidel.bodies, convergedSettings());
+
+  const real scale = velocityScale(original);
+  const real tolerance = (test::isFloat ? real(2e-3) : real(1e-8)) * scale;
+  expectComplementarity(baraff, tolerance);
+  expectComplementarity(gaussSeidel, tolerance);
+  expectSameVelocities(baraff, gaussSeidel, tolerance);
+}
+
+TEST_P(RandomPile, BaraffMatchesActiveSetEnumerationOnSmallProblems) {
+  Simulator simulator;
+  Problem original = makeProblem(GetParam(), 7, simulator);
+  // Keep the first 12 contacts at most, so 2^m active sets can be enumerated.
+  if (original.rows.size() > 12) original.rows.resize(12);
+  original.all.resize(original.rows.size());
+  if (original.rows.empty()) GTEST_SKIP() << "no contact in this layout";
+  Problem reference = original;
+  ASSERT_TRUE(referenceSolve(reference));
+  Problem baraff = original;
+  BaraffSolver solver;
+  ASSERT_TRUE(solver.solve(baraff.all, baraff.rows, baraff.bodies));
+  const real tolerance = (test::isFloat ? real(1e-3) : real(1e-8)) * velocityScale(original);
+  expectSameVelocities(baraff, reference, tolerance);
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, RandomPile, ::testing::Range(1u, 21u));
+
+TEST(BaraffSolver, RedundantContactsOfAFlatCapsuleGiveTheUniqueVelocity) {
+  // A capsule lying flat on a border touches it at both ends; a circle pressed on its middle
+  // adds a third, redundant path. Pushed down, nothing may move down.
+  Simulator simulator;
+  simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
+  auto& capsule = simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.2), real(1)));
+  capsule.r = {0, real(0.2)};
+  auto& circle = simulator.registerObject(std::make_unique<Circle>(real(0.2), real(1)));
+  circle.r = {real(0.3), real(0.6)};
+  for (const auto kind : {ContactSolverKind::Baraff, ContactSolverKind::GaussSeidel}) {
+    simulator.setContactSolver(kind);
+    circle.externalForce = {0, -5};
+    capsule.externalForce = {0, -2};
+    simulator.advanceTime();
+    EXPECT_EQ(simulator.contacts.size(), 3u);
+    EXPECT_NEAR(capsule.v.y, 0, test::loose);
+    EXPECT_NEAR(capsule.omega, 0, test::loose);
+    EXPECT_NEAR(circle.v.y, 0, test::loose);
+    // Total contact force from the floor carries the total push.
+    real floorForce = 0;
+    for (const GlobalContactInfo& c : simulator.contacts)
+      if (c.objectA != &circle && c.objectB != &circle) floorForce += c.force;
+    EXPECT_NEAR(floorForce, 7, 1e3 * test::loose);
+  }
+}
+
+TEST(BaraffSolver, ContradictoryTargetsFallBackWithoutExplosion) {
+  // A circle squeezed between two borders closer than its diameter: both contacts demand
+  // separation, which no velocity can give. The step must stay finite and bounded.
+  Simulator simulator;
+  simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
+  simulator.registerObject(std::make_unique<Border>(Vector2{0, real(0.9)}, Vector2{0, -1}));
+  auto& circle = simulator.registerObject(std::make_unique<Circle>(real(0.5), real(1)));
+  circle.r = {0, real(0.45)};
+  for (int step = 0; step < 100; ++step) simulator.advanceTime();
+  EXPECT_TRUE(std::isfinite(circle.r.y));
+  EXPECT_NEAR(circle.r.y, real(0.45), real(0.05));
+}
+
+TEST(Islands, SeparateGroupsAreSeparateIslands) {
+  // Two rows of touching circles far apart, plus a border under both: the border, being
+  // fixed, does not join them.
+  Simulator simulator;
+  simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
+  for (const real x0 : {real(0), real(10)})
+    for (int i = 0; i < 3; ++i) {
+      auto& c = simulator.registerObject(std::make_unique<Circle>(real(0.5), real(1)));
+      c.r = {x0 + static_cast<real>(i), real(0.5)};
+      c.externalForce = {0, -1};
+    }
+  simulator.advanceTime();
+  EXPECT_EQ(simulator.statistics().islands, 2u);
+}
+
+}  // namespace
+}  // namespace thyrix

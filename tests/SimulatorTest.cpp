@@ -1,2 +1,209 @@
+// The simulator as a whole: determinism, piles without overlap, mouse dragging, and the
+// bookkeeping of contacts between the global list and the objects' lists.
+
+#include "TestTolerances.h"
+
+#include <Scenes.h>
+#include <ThyrixLite/Border.h>
+#include <ThyrixLite/CappedRectangle.h>
+#include <ThyrixLite/Circle.h>
+#include <ThyrixLite/Simulator.h>
+#include <Tools/MTRandom.h>
+
 #include <gtest/gtest.h>
-TEST(Placeholder, Pending) { SUCCEED(); }
+
+#include <cmath>
+
+namespace thyrix {
+namespace {
+
+const char* solverName(const ::testing::TestParamInfo<ContactSolverKind>& solver) {
+  return solver.param == ContactSolverKind::Baraff ? "Baraff" : "GaussSeidel";
+}
+
+/// 30 bodies (circles and capsules, radii 0.2 to 0.3) on a loose grid without overlap in a
+/// 6 x 6 box.
+std::vector<PhysicalObject*> addCornerPile(Simulator& simulator, std::uint32_t seed) {
+  MTRandom random(seed);
+  scenes::addWalls(simulator, 6, 6);
+  std::vector<PhysicalObject*> bodies;
+  for (int i = 0; i < 30; ++i) {
+    PhysicalObject* body;
+    if (i % 4 == 3)
+      body = &simulator.registerObject(std::make_unique<CappedRectangle>(real(0.3), real(0.2), real(1.5)));
+    else
+      body = &simulator.registerObject(std::make_unique<Circle>(
+          static_cast<real>(random.uniform(0.2, 0.3)), static_cast<real>(random.uniform(0.5, 2))));
+    body->r = {real(0.8) + real(0.95) * static_cast<real>(i % 5), real(0.5) + real(0.95) * static_cast<real>(i / 5)};
+    body->alpha = static_cast<real>(random.uniform(-1.5, 1.5));
+    bodies.push_back(body);
+  }
+  return bodies;
+}
+
+class SimulatorTest : public ::testing::TestWithParam<ContactSolverKind> {};
+
+TEST_P(SimulatorTest, SameSceneGivesBitIdenticalRuns) {
+  std::uint64_t hashes[2];
+  for (std::uint64_t& hash : hashes) {
+    Simulator simulator;
+    simulator.setContactSolver(GetParam());
+    const auto bodies = addCornerPile(simulator, 7);
+    MTRandom random(3);
+    for (int step = 0; step < 500; ++step) {
+      for (PhysicalObject* body : bodies)
+        body->externalForce = {static_cast<real>(random.uniform(-2, 2)), static_cast<real>(random.uniform(-2, 2))};
+      simulator.advanceTime();
+    }
+    hash = scenes::stateHash(simulator);
+  }
+  EXPECT_EQ(hashes[0], hashes[1]);
+}
+
+TEST_P(SimulatorTest, PilePushedIntoCornerNeverOverlapsBeyondTolerance) {
+  Simulator simulator;
+  simulator.setContactSolver(GetParam());
+  const auto bodies = addCornerPile(simulator, 11);
+  // A free body moves at 1 m/s: 5% of the smallest radius per step. Overlap then comes only
+  // from the first-order error of sliding around curved surfaces, which the correction bounds.
+  real worst = 0;
+  for (int step = 0; step < 2000; ++step) {
+    scenes::push(bodies, {real(-0.6), real(-0.8)});
+    simulator.advanceTime();
+    worst = std::max(worst, scenes::largestOverlap(simulator));
+  }
+  // The smallest radius is 0.2: overlap stays under 1% of it.
+  EXPECT_LT(worst, real(0.002));
+  // And the pile is packed into the corner: everyone moved down-left and stopped.
+  for (PhysicalObject* body : bodies) {
+    EXPECT_LT(body->v.length(), real(0.05));
+    EXPECT_GE(body->boxMin.x, -real(0.002));
+    EXPECT_GE(body->boxMin.y, -real(0.002));
+  }
+}
+
+TEST_P(SimulatorTest, DragPullsBodyToMouseAndStopsOnRelease) {
+  Simulator simulator;
+  simulator.setContactSolver(GetParam());
+  auto& capsule = simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.2), real(2)));
+  const Vector2 grab{real(0.8), 0};  // near one end: pulling turns the body too
+  simulator.startDrag(capsule, grab);
+  const Vector2 mouse{3, 2};
+  simulator.dragTo(mouse);
+  for (int step = 0; step < 400; ++step) simulator.advanceTime();
+  const Vector2 grabbedNow = capsule.toWorld(Vector2{real(0.8), 0});
+  EXPECT_LT(distance(grabbedNow, mouse), real(1e-3));
+  simulator.stopDrag();
+  EXPECT_EQ(simulator.draggedObject(), nullptr);
+  const Vector2 released = capsule.r;
+  simulator.advanceTime();
+  EXPECT_EQ(capsule.v, Vector2{});
+  EXPECT_EQ(capsule.omega, 0);
+  EXPECT_EQ(capsule.r, released);
+}
+
+TEST_P(SimulatorTest, DraggedBodyPushesOthersAndIsStoppedByBorders) {
+  Simulator simulator;
+  simulator.setContactSolver(GetParam());
+  simulator.registerObject(std::make_unique<Border>(Vector2{5, 0}, Vector2{-1, 0}));
+  auto& dragged = simulator.registerObject(std::make_unique<Circle>(real(0.5), real(1)));
+  auto& pushed = simulator.registerObject(std::make_unique<Circle>(real(0.5), real(1)));
+  pushed.r = {real(1.5), 0};
+  simulator.startDrag(dragged, {0, 0});
+  simulator.dragTo({10, 0});  // beyond the wall at x = 5
+  for (int step = 0; step < 1000; ++step) simulator.advanceTime();
+  EXPECT_NEAR(pushed.r.x, real(4.5), real(0.01)) << "pushed against the wall";
+  EXPECT_NEAR(dragged.r.x, real(3.5), real(0.01)) << "held off by the pushed circle";
+}
+
+TEST_P(SimulatorTest, ContactsAreIndexedInBothObjectsWithOpposedNormalsAndForces) {
+  Simulator simulator;
+  simulator.setContactSolver(GetParam());
+  const auto bodies = addCornerPile(simulator, 5);
+  for (int step = 0; step < 300; ++step) {
+    scenes::push(bodies, {-1, -1});
+    simulator.advanceTime();
+  }
+  ASSERT_FALSE(simulator.contacts.empty());
+  std::size_t listed = 0;
+  for (const PhysicalObject& object : simulator.objects) {
+    for (const ContactInfo& info : object.contacts) {
+      ++listed;
+      const GlobalContactInfo& global = simulator.contacts[info.index];
+      ASSERT_TRUE(global.objectA == &object || global.objectB == &object);
+      const bool isA = global.objectA == &object;
+      EXPECT_EQ(info.other, isA ? global.objectB : global.objectA);
+      EXPECT_EQ(info.normal, isA ? -global.normal : global.normal);
+      EXPECT_EQ(info.force, global.force);
+      EXPECT_EQ(info.point, global.point);
+    }
+  }
+  EXPECT_EQ(listed, 2 * simulator.contacts.size());
+  // The quasistatic law holds per body with the contact forces: push + contacts = D u.
+  for (PhysicalObject* body : bodies) {
+    Vector2 net = Vector2{-1, -1} * body->m;
+    real torque = 0;
+    const Vector2 centreWhenSolved = body->r - body->v * simulator.timestep();
+    for (const ContactInfo& info : body->contacts) {
+      net += info.normal * info.force;
+      torque += cross(info.point - centreWhenSolved, info.normal * info.force);
+    }
+    const real tolerance = test::isFloat ? real(1e-3) : real(1e-6);
+    EXPECT_NEAR(net.x, body->m * body->v.x, tolerance);
+    EXPECT_NEAR(net.y, body->m * body->v.y, tolerance);
+    EXPECT_NEAR(torque, body->I * body->omega, tolerance);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(BothSolvers, SimulatorTest,
+                         ::testing::Values(ContactSolverKind::Baraff, ContactSolverKind::GaussSeidel),
+                         solverName);
+
+TEST(Simulator, ContactIdentityIsStableWhileTheSameFeaturesTouch) {
+  Simulator simulator;
+  simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
+  auto& capsule = simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.2), real(1)));
+  capsule.r = {0, real(0.2)};
+  capsule.externalForce = {1, -1};
+  simulator.advanceTime();
+  ASSERT_EQ(simulator.contacts.size(), 2u);
+  const auto first = simulator.contacts[0];
+  const auto second = simulator.contacts[1];
+  EXPECT_NE(first.feature, second.feature);
+  for (int step = 0; step < 10; ++step) {
+    capsule.externalForce = {1, -1};
+    simulator.advanceTime();
+    ASSERT_EQ(simulator.contacts.size(), 2u);
+    EXPECT_EQ(simulator.contacts[0].shapeA, first.shapeA);
+    EXPECT_EQ(simulator.contacts[0].shapeB, first.shapeB);
+    EXPECT_EQ(simulator.contacts[0].feature, first.feature);
+    EXPECT_EQ(simulator.contacts[1].feature, second.feature);
+  }
+}
+
+TEST(Simulator, StepCountTimeAndTimestep) {
+  Simulator simulator(real(0.02));
+  EXPECT_EQ(simulator.timestep(), real(0.02));
+  for (int i = 0; i < 5; ++i) simulator.advanceTime();
+  EXPECT_EQ(simulator.stepCount(), 5u);
+  EXPECT_NEAR(simulator.time(), 0.1, 1e-6);
+}
+
+TEST(Simulator, FixedBodiesNeverMove) {
+  Simulator simulator;
+  auto& wall = simulator.registerObject(std::make_unique<Circle>(real(1), real(1)));
+  wall.fixed = true;
+  auto& ball = simulator.registerObject(std::make_unique<Circle>(real(0.5), real(1)));
+  ball.r = {real(1.5), 0};
+  for (int step = 0; step < 20; ++step) {
+    wall.externalForce = {5, 5};
+    ball.externalForce = {-3, 0};
+    simulator.advanceTime();
+  }
+  EXPECT_EQ(wall.r, Vector2{});
+  EXPECT_EQ(wall.v, Vector2{});
+  EXPECT_GE(ball.r.x, real(1.5) - test::loose);
+}
+
+}  // namespace
+}  // namespace thyrix

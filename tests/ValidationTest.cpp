@@ -1,2 +1,311 @@
+// Bad input is refused with an InvalidArgument naming the field, and the world is left as it
+// was (DESIGN.md section 6).
+
+#include <ThyrixLite/Border.h>
+#include <ThyrixLite/CappedRectangle.h>
+#include <ThyrixLite/Circle.h>
+#include <ThyrixLite/InvalidArgument.h>
+#include <ThyrixLite/Simulator.h>
 #include <gtest/gtest.h>
-TEST(Placeholder, Pending) { SUCCEED(); }
+#include <scenes/Scenes.h>
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace thyrix {
+namespace {
+
+constexpr real kNaN = std::numeric_limits<real>::quiet_NaN();
+constexpr real kInf = std::numeric_limits<real>::infinity();
+
+/// Runs @p action and returns the field named by the InvalidArgument it throws, after checking
+/// that the message names the field too; "<no exception>" or "<other exception>" otherwise.
+template <class Action>
+std::string thrownField(Action&& action) {
+  try {
+    action();
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find(e.field()), std::string::npos)
+        << "message \"" << e.what() << "\" does not name the field " << e.field();
+    EXPECT_FALSE(e.field().empty());
+    return e.field();
+  } catch (...) {
+    return "<other exception>";
+  }
+  return "<no exception>";
+}
+
+// ---------------------------------------------------------------------------------------------
+// Construction
+
+TEST(ValidationTest, CircleRadius) {
+  for (const real radius : {real(-1), real(0), kNaN, kInf, -kInf}) {
+    SCOPED_TRACE(radius);
+    EXPECT_EQ(thrownField([&] { Circle circle(radius, 1); }), "Circle.radius");
+  }
+  EXPECT_EQ(thrownField([] { Circle circle(real(0.5), 1); }), "<no exception>");
+}
+
+TEST(ValidationTest, CircleMass) {
+  for (const real mass : {real(-1), real(0), kNaN, kInf, -kInf}) {
+    SCOPED_TRACE(mass);
+    EXPECT_EQ(thrownField([&] { Circle circle(1, mass); }), "Circle.mass");
+  }
+}
+
+TEST(ValidationTest, CappedRectangleFields) {
+  for (const real bad : {real(-1), real(0), kNaN, kInf}) {
+    SCOPED_TRACE(bad);
+    EXPECT_EQ(thrownField([&] { CappedRectangle c(bad, 1, 1); }), "CappedRectangle.l");
+    EXPECT_EQ(thrownField([&] { CappedRectangle c(1, bad, 1); }), "CappedRectangle.R");
+    EXPECT_EQ(thrownField([&] { CappedRectangle c(1, 1, bad); }), "CappedRectangle.mass");
+  }
+  EXPECT_EQ(thrownField([] { CappedRectangle c(2, real(0.5), 3); }), "<no exception>");
+}
+
+TEST(ValidationTest, BorderFields) {
+  EXPECT_EQ(thrownField([] { Border b({0, 0}, {0, 0}); }), "Border.normal");
+  EXPECT_EQ(thrownField([] { Border b({0, 0}, {kNaN, 1}); }), "Border.normal");
+  EXPECT_EQ(thrownField([] { Border b({0, 0}, {1, kNaN}); }), "Border.normal");
+  EXPECT_EQ(thrownField([] { Border b({0, 0}, {kInf, 0}); }), "Border.normal");
+  EXPECT_EQ(thrownField([] { Border b({kNaN, 0}, {0, 1}); }), "Border.point");
+  EXPECT_EQ(thrownField([] { Border b({0, kInf}, {0, 1}); }), "Border.point");
+  EXPECT_EQ(thrownField([] { Border b({1, 2}, {0, 3}); }), "<no exception>");
+}
+
+TEST(ValidationTest, SimulatorTimestepConstructor) {
+  for (const real dt : {real(0), real(-0.01), kNaN, kInf}) {
+    SCOPED_TRACE(dt);
+    EXPECT_EQ(thrownField([&] { Simulator simulator(dt); }), "Simulator.timestep");
+  }
+  EXPECT_EQ(thrownField([] { Simulator simulator(real(0.02)); }), "<no exception>");
+}
+
+TEST(ValidationTest, SetTimestepKeepsTheOldOne) {
+  Simulator simulator(real(0.02));
+  for (const real dt : {real(0), real(-0.01), kNaN, kInf}) {
+    SCOPED_TRACE(dt);
+    EXPECT_EQ(thrownField([&] { simulator.setTimestep(dt); }), "Simulator.timestep");
+    EXPECT_EQ(simulator.timestep(), real(0.02));
+  }
+  simulator.setTimestep(real(0.05));
+  EXPECT_EQ(simulator.timestep(), real(0.05));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Registration and drag, with the world left unchanged
+
+/// A small world: a floor, a wall, two circles and a capsule touching or slightly overlapping,
+/// all pushed down and sideways each step so that contacts and solving happen.
+struct TestWorld {
+  Simulator simulator{real(0.01)};
+  std::vector<PhysicalObject*> bodies;
+
+  TestWorld() {
+    simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
+    simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{1, 0}));
+    auto& a = simulator.registerObject(std::make_unique<Circle>(real(0.5), 1));
+    a.r = {1, real(0.49)};
+    auto& b = simulator.registerObject(std::make_unique<Circle>(real(0.5), 2));
+    b.r = {real(1.95), real(0.52)};
+    auto& c = simulator.registerObject(std::make_unique<CappedRectangle>(1, real(0.25), 1));
+    c.r = {real(1.5), real(1.2)};
+    c.alpha = real(0.1);
+    bodies = {&a, &b, &c};
+  }
+
+  void step() {
+    scenes::push(bodies, Vector2{real(-0.5), -1});
+    simulator.advanceTime();
+  }
+};
+
+/// A refused action on a world, and the field it must name.
+struct BadInput {
+  const char* name;   // test name
+  const char* field;  // expected InvalidArgument::field()
+  std::function<void(TestWorld&)> action;
+};
+
+std::unique_ptr<Circle> circleAt(Vector2 r) {
+  auto circle = std::make_unique<Circle>(real(0.3), 1);
+  circle->r = r;
+  return circle;
+}
+
+const std::vector<BadInput>& badInputs() {
+  static const std::vector<BadInput> cases = {
+      {"CircleRadiusNegative", "Circle.radius",
+       [](TestWorld& w) { w.simulator.registerObject(std::make_unique<Circle>(real(-1), 1)); }},
+      {"CircleMassNaN", "Circle.mass",
+       [](TestWorld& w) { w.simulator.registerObject(std::make_unique<Circle>(1, kNaN)); }},
+      {"CappedRectangleLZero", "CappedRectangle.l",
+       [](TestWorld& w) {
+         w.simulator.registerObject(std::make_unique<CappedRectangle>(0, 1, 1));
+       }},
+      {"BorderZeroNormal", "Border.normal",
+       [](TestWorld& w) {
+         w.simulator.registerObject(std::make_unique<Border>(Vector2{0, 5}, Vector2{0, 0}));
+       }},
+      {"CirclePositionNaN", "Circle.r",
+       [](TestWorld& w) {
+         w.simulator.registerObject(circleAt({kNaN, 3}));
+       }},
+      {"CirclePositionYNaN", "Circle.r",
+       [](TestWorld& w) {
+         w.simulator.registerObject(circleAt({3, kNaN}));
+       }},
+      {"CirclePositionInfinite", "Circle.r",
+       [](TestWorld& w) {
+         w.simulator.registerObject(circleAt({kInf, 3}));
+       }},
+      {"CircleAngleNaN", "Circle.alpha",
+       [](TestWorld& w) {
+         auto circle = circleAt({3, 3});
+         circle->alpha = kNaN;
+         w.simulator.registerObject(std::move(circle));
+       }},
+      {"CircleMassNegativeAfterConstruction", "Circle.m",
+       [](TestWorld& w) {
+         auto circle = circleAt({3, 3});
+         circle->m = -1;
+         w.simulator.registerObject(std::move(circle));
+       }},
+      {"CappedRectanglePositionNaN", "CappedRectangle.r",
+       [](TestWorld& w) {
+         auto capsule = std::make_unique<CappedRectangle>(1, real(0.2), 1);
+         capsule->r = {kNaN, kNaN};
+         w.simulator.registerObject(std::move(capsule));
+       }},
+      {"NullObject", "World.registerObject.object",
+       [](TestWorld& w) { w.simulator.registerObject(std::unique_ptr<Circle>()); }},
+      {"SetTimestepZero", "Simulator.timestep", [](TestWorld& w) { w.simulator.setTimestep(0); }},
+      {"SetTimestepNegative", "Simulator.timestep",
+       [](TestWorld& w) { w.simulator.setTimestep(real(-0.01)); }},
+      {"SetTimestepNaN", "Simulator.timestep", [](TestWorld& w) { w.simulator.setTimestep(kNaN); }},
+      {"StartDragUnregisteredObject", "Simulator.startDrag.object",
+       [](TestWorld& w) {
+         Circle stranger(real(0.5), 1);
+         w.simulator.startDrag(stranger, {0, 0});
+       }},
+      {"StartDragObjectOfAnotherSimulator", "Simulator.startDrag.object",
+       [](TestWorld& w) {
+         TestWorld other;
+         w.simulator.startDrag(*other.bodies[0], other.bodies[0]->r);
+       }},
+      {"StartDragGrabPointNaN", "Simulator.startDrag.grabPoint",
+       [](TestWorld& w) {
+         w.simulator.startDrag(*w.bodies[0], {kNaN, 0});
+       }},
+      {"DragToNaN", "Simulator.dragTo.target",
+       [](TestWorld& w) {
+         w.simulator.dragTo({0, kNaN});
+       }},
+  };
+  return cases;
+}
+
+class RefusedInputTest : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(RefusedInputTest, NamesTheFieldAndLeavesTheWorldUnchanged) {
+  const BadInput& bad = GetParam();
+  TestWorld world;
+  TestWorld reference;
+  const std::size_t size = world.simulator.objects.size();
+  const std::uint64_t hash = scenes::stateHash(world.simulator);
+  const real timestep = world.simulator.timestep();
+  ASSERT_EQ(hash, scenes::stateHash(reference.simulator));
+
+  EXPECT_EQ(thrownField([&] { bad.action(world); }), bad.field);
+
+  EXPECT_EQ(world.simulator.objects.size(), size);
+  EXPECT_EQ(scenes::stateHash(world.simulator), hash);
+  EXPECT_EQ(world.simulator.timestep(), timestep);
+  EXPECT_EQ(world.simulator.draggedObject(), nullptr);
+
+  // The world moves on exactly as one that never saw the bad input.
+  for (int i = 0; i < 50; ++i) {
+    world.step();
+    reference.step();
+  }
+  EXPECT_NE(scenes::stateHash(reference.simulator), hash) << "the test world should move";
+  EXPECT_EQ(scenes::stateHash(world.simulator), scenes::stateHash(reference.simulator));
+
+  // And it still accepts objects, which then behave as in the reference world.
+  for (TestWorld* w : {&world, &reference}) {
+    auto& circle = w->simulator.registerObject(circleAt({real(3.5), real(0.25)}));
+    w->bodies.push_back(&circle);
+  }
+  for (int i = 0; i < 50; ++i) {
+    world.step();
+    reference.step();
+  }
+  EXPECT_EQ(world.simulator.objects.size(), size + 1);
+  EXPECT_EQ(scenes::stateHash(world.simulator), scenes::stateHash(reference.simulator));
+}
+
+INSTANTIATE_TEST_SUITE_P(ValidationTest, RefusedInputTest, ::testing::ValuesIn(badInputs()),
+                         [](const ::testing::TestParamInfo<BadInput>& info) {
+                           return std::string(info.param.name);
+                         });
+
+TEST(ValidationTest, RefusedDragKeepsTheCurrentDrag) {
+  // Two identical worlds dragging the same body; one is also sent bad drag requests.
+  TestWorld world;
+  TestWorld reference;
+  for (TestWorld* w : {&world, &reference}) {
+    w->simulator.startDrag(*w->bodies[2], w->bodies[2]->r + Vector2{real(0.5), 0});
+    w->simulator.dragTo({3, 2});
+  }
+  const std::uint64_t hash = scenes::stateHash(world.simulator);
+
+  EXPECT_EQ(thrownField([&] { world.simulator.dragTo({kNaN, 1}); }), "Simulator.dragTo.target");
+  EXPECT_EQ(thrownField([&] { world.simulator.dragTo({1, kInf}); }), "Simulator.dragTo.target");
+  EXPECT_EQ(thrownField([&] {
+              world.simulator.startDrag(*world.bodies[0], {kNaN, kNaN});
+            }),
+            "Simulator.startDrag.grabPoint");
+  Circle stranger(1, 1);
+  EXPECT_EQ(thrownField([&] {
+              world.simulator.startDrag(stranger, {0, 0});
+            }),
+            "Simulator.startDrag.object");
+  EXPECT_EQ(
+      thrownField([&] { world.simulator.startDrag(*reference.bodies[0], reference.bodies[0]->r); }),
+      "Simulator.startDrag.object");
+
+  EXPECT_EQ(world.simulator.draggedObject(), world.bodies[2]);
+  EXPECT_EQ(scenes::stateHash(world.simulator), hash);
+  for (int i = 0; i < 50; ++i) {
+    world.step();
+    reference.step();
+  }
+  EXPECT_NE(scenes::stateHash(reference.simulator), hash);
+  EXPECT_EQ(scenes::stateHash(world.simulator), scenes::stateHash(reference.simulator));
+}
+
+TEST(ValidationTest, ValidInputIsAccepted) {
+  // The counterpart of the refusals: sound values go through.
+  TestWorld world;
+  const std::size_t size = world.simulator.objects.size();
+  EXPECT_EQ(thrownField([&] {
+              world.simulator.registerObject(circleAt({3, 3}));
+            }),
+            "<no exception>");
+  EXPECT_EQ(world.simulator.objects.size(), size + 1);
+  EXPECT_EQ(thrownField([&] { world.simulator.setTimestep(real(0.005)); }), "<no exception>");
+  EXPECT_EQ(world.simulator.timestep(), real(0.005));
+  EXPECT_EQ(thrownField([&] {
+              world.simulator.startDrag(*world.bodies[1], {2, real(0.5)});
+            }),
+            "<no exception>");
+  EXPECT_EQ(world.simulator.draggedObject(), world.bodies[1]);
+  EXPECT_EQ(thrownField([&] { world.simulator.dragTo({4, 4}); }), "<no exception>");
+}
+
+}  // namespace
+}  // namespace thyrix
