@@ -41,45 +41,76 @@ void BaraffSolver::buildMatrix(std::span<const std::uint32_t> island,
   }
 }
 
-bool BaraffSolver::computeDirection(std::size_t d) {
+bool BaraffSolver::clamp(std::size_t i) {
   const std::size_t n = size_;
   const std::size_t c = clamped_.size();
-  // Cholesky factorization of A_CC (lower triangle, row-major c x c).
-  factor_.resize(c * c);
-  for (std::size_t i = 0; i < c; ++i) {
-    for (std::size_t j = 0; j <= i; ++j) {
-      real sum = matrix_[clamped_[i] * n + clamped_[j]];
-      for (std::size_t k = 0; k < j; ++k) sum -= factor_[i * c + k] * factor_[j * c + k];
-      if (i == j) {
-        if (sum <= relativeTolerance * scale_) return false;  // A_CC (numerically) singular
-        factor_[i * c + i] = std::sqrt(sum);
-      } else {
-        factor_[i * c + j] = sum / factor_[j * c + j];
-      }
+  // New row l of L: L l = A_Ci (forward substitution), then the diagonal sqrt(A_ii - l.l).
+  real* row = &factor_[c * n];
+  real diagonal = matrix_[i * n + i];
+  for (std::size_t j = 0; j < c; ++j) {
+    real sum = matrix_[i * n + clamped_[j]];
+    for (std::size_t k = 0; k < j; ++k) sum -= row[k] * factor_[j * n + k];
+    row[j] = sum / factor_[j * n + j];
+    diagonal -= row[j] * row[j];
+  }
+  if (diagonal <= relativeTolerance * scale_) return false;  // A_CC would be (numerically) singular
+  row[c] = std::sqrt(diagonal);
+  clamped_.push_back(i);
+  state_[i] = State::Clamped;
+  return true;
+}
+
+void BaraffSolver::release(std::size_t position) {
+  const std::size_t n = size_;
+  const std::size_t c = clamped_.size();
+  // Deleting row and column p of L leaves L' with L' L'^T = A' - x x^T on the trailing block,
+  // x being the deleted column below the diagonal: restore it with a rank-one update.
+  for (std::size_t i = position + 1; i < c; ++i) {
+    solution_[i] = factor_[i * n + position];  // x, kept in solution_ as scratch
+    for (std::size_t j = position; j < i; ++j) factor_[(i - 1) * n + j] = factor_[i * n + j + 1];
+    for (std::size_t j = 0; j < position; ++j) factor_[(i - 1) * n + j] = factor_[i * n + j];
+  }
+  for (std::size_t k = position; k + 1 < c; ++k) {
+    const real x = solution_[k + 1];
+    const real lkk = factor_[k * n + k];
+    const real r = std::hypot(lkk, x);
+    const real cosine = r / lkk;
+    const real sine = x / lkk;
+    factor_[k * n + k] = r;
+    for (std::size_t i = k + 1; i + 1 < c; ++i) {
+      real& lik = factor_[i * n + k];
+      lik = (lik + sine * solution_[i + 1]) / cosine;
+      solution_[i + 1] = cosine * solution_[i + 1] - sine * lik;
     }
   }
-  // Solve A_CC x = -A_Cd by forward and back substitution.
-  solution_.resize(c);
+  state_[clamped_[position]] = State::NotClamped;
+  clamped_.erase(clamped_.begin() + static_cast<std::ptrdiff_t>(position));
+}
+
+void BaraffSolver::computeDirection(std::size_t d) {
+  const std::size_t n = size_;
+  const std::size_t c = clamped_.size();
+  // Solve A_CC x = -A_Cd with the factor: L y = -A_Cd, then L^T x = y.
   for (std::size_t i = 0; i < c; ++i) {
     real sum = -matrix_[clamped_[i] * n + d];
-    for (std::size_t k = 0; k < i; ++k) sum -= factor_[i * c + k] * solution_[k];
-    solution_[i] = sum / factor_[i * c + i];
+    for (std::size_t k = 0; k < i; ++k) sum -= factor_[i * n + k] * solution_[k];
+    solution_[i] = sum / factor_[i * n + i];
   }
   for (std::size_t i = c; i-- > 0;) {
     real sum = solution_[i];
-    for (std::size_t k = i + 1; k < c; ++k) sum -= factor_[k * c + i] * solution_[k];
-    solution_[i] = sum / factor_[i * c + i];
+    for (std::size_t k = i + 1; k < c; ++k) sum -= factor_[k * n + i] * solution_[k];
+    solution_[i] = sum / factor_[i * n + i];
   }
   std::fill(direction_.begin(), direction_.end(), real(0));
   direction_[d] = 1;
   for (std::size_t i = 0; i < c; ++i) direction_[clamped_[i]] = solution_[i];
   // dw = A df, over the columns where df is non-zero.
   for (std::size_t i = 0; i < n; ++i) {
-    real sum = matrix_[i * n + d];
-    for (const std::size_t k : clamped_) sum += matrix_[i * n + k] * direction_[k];
+    const real* row = &matrix_[i * n];
+    real sum = row[d];
+    for (const std::size_t k : clamped_) sum += row[k] * direction_[k];
     slackRate_[i] = sum;
   }
-  return true;
 }
 
 bool BaraffSolver::solve(std::span<const std::uint32_t> island, std::span<ContactConstraint> rows,
@@ -94,6 +125,8 @@ bool BaraffSolver::solve(std::span<const std::uint32_t> island, std::span<Contac
   slackRate_.resize(n);
   state_.assign(n, State::Unprocessed);
   clamped_.clear();
+  factor_.resize(n * n);
+  solution_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const ContactConstraint& row = rows[island[i]];
     slack_[i] = row.normalVelocity(bodies[row.a], bodies[row.b]) - row.target;
@@ -108,7 +141,8 @@ bool BaraffSolver::solve(std::span<const std::uint32_t> island, std::span<Contac
     }
     // Drive contact d until w_d = c_d, pivoting whatever blocks the way.
     while (true) {
-      if (++pivots_ > maxPivots || !computeDirection(d)) return false;
+      if (++pivots_ > maxPivots) return false;
+      computeDirection(d);
       real step = realMax;
       std::size_t blocker = n;
       if (slackRate_[d] > rateTolerance) {
@@ -140,18 +174,16 @@ bool BaraffSolver::solve(std::span<const std::uint32_t> island, std::span<Contac
       }
       if (blocker == d) {
         slack_[d] = 0;
-        state_[d] = State::Clamped;
-        clamped_.push_back(d);
+        if (!clamp(d)) return false;
         break;
       }
       if (state_[blocker] == State::Clamped) {  // its force reached zero: release it
         force_[blocker] = 0;
-        state_[blocker] = State::NotClamped;
-        clamped_.erase(std::find(clamped_.begin(), clamped_.end(), blocker));
+        release(static_cast<std::size_t>(std::find(clamped_.begin(), clamped_.end(), blocker) -
+                                         clamped_.begin()));
       } else {  // it started to approach: clamp it
         slack_[blocker] = 0;
-        state_[blocker] = State::Clamped;
-        clamped_.push_back(blocker);
+        if (!clamp(blocker)) return false;
       }
     }
   }

@@ -15,9 +15,10 @@ namespace thyrix {
 /// clamped set C (`w = c`, force free) and the not-clamped set NC (`f = 0`, `w >= c`) stay
 /// consistent; each pivot moves one index between the sets.
 ///
-/// The island's matrix `A = J D^-1 J^T` is formed densely and `A_CC` is refactored (Cholesky)
-/// at each pivot: islands are small. The work buffers are kept between calls, so a warmed-up
-/// solver allocates nothing.
+/// The island's matrix `A = J D^-1 J^T` is formed densely; the Cholesky factor of `A_CC` is
+/// updated as indices join C (one new row) or leave it (a rank-one update), so a pivot costs
+/// O(|C|^2) rather than a refactorization. The work buffers are kept between calls, so a
+/// warmed-up solver allocates nothing.
 class BaraffSolver {
  public:
   /// Solves the rows listed in @p island (their forces must be zero on entry) and adds the
@@ -36,8 +37,12 @@ class BaraffSolver {
 
   void buildMatrix(std::span<const std::uint32_t> island, std::span<const ContactConstraint> rows,
                    std::span<const SolverBody> bodies);
-  /// Fills df_ with the direction that raises f_d by 1 and keeps the clamped set at w = c.
-  bool computeDirection(std::size_t d);
+  /// Fills direction_ (df) and slackRate_ (dw) for raising f_d by 1 while C stays at w = c.
+  void computeDirection(std::size_t d);
+  /// Adds contact @p i to C, extending the factor by one row; false if A_CC would be singular.
+  bool clamp(std::size_t i);
+  /// Removes the contact at position @p position of C, updating the factor.
+  void release(std::size_t position);
 
   std::size_t size_ = 0;
   std::vector<real> matrix_;     // A, size_ x size_, row-major
@@ -47,7 +52,7 @@ class BaraffSolver {
   std::vector<real> slackRate_;  // dw = A df
   std::vector<State> state_;
   std::vector<std::size_t> clamped_;  // C, in the order contacts joined it
-  std::vector<real> factor_;          // Cholesky factor of A_CC
+  std::vector<real> factor_;          // Cholesky factor L of A_CC, row stride size_
   std::vector<real> solution_;        // the solve of A_CC x = -A_Cd
   real scale_ = 1;                    // largest diagonal entry of A, for tolerances
   int pivots_ = 0;
