@@ -41,6 +41,14 @@ void BaraffSolver::buildMatrix(std::span<const std::uint32_t> island,
   }
 }
 
+void BaraffSolver::reserve(std::size_t contacts) {
+  matrix_.reserve(contacts * contacts);
+  factor_.reserve(contacts * contacts);
+  for (auto* buffer : {&slack_, &force_, &direction_, &slackRate_, &solution_}) buffer->reserve(contacts);
+  state_.reserve(contacts);
+  clamped_.reserve(contacts);
+}
+
 bool BaraffSolver::clamp(std::size_t i) {
   const std::size_t n = size_;
   const std::size_t c = clamped_.size();

@@ -29,6 +29,9 @@ class BaraffSolver {
   bool solve(std::span<const std::uint32_t> island, std::span<ContactConstraint> rows,
              std::span<SolverBody> bodies);
 
+  /// Makes room for islands of up to @p contacts contacts without further allocation.
+  void reserve(std::size_t contacts);
+
   /// Pivots done by the last call (for statistics and tests).
   [[nodiscard]] int lastPivotCount() const { return pivots_; }
 

@@ -12,6 +12,15 @@ std::uint32_t Islands::find(std::uint32_t body) {
   return body;
 }
 
+void Islands::reserve(std::size_t bodies, std::size_t rows) {
+  parent_.reserve(bodies);
+  islandOfBody_.reserve(bodies);
+  islandOfRow_.reserve(rows);
+  islandStart_.reserve(rows + 1);
+  cursor_.reserve(rows + 1);
+  contacts_.reserve(rows);
+}
+
 void Islands::build(std::span<const ContactConstraint> rows, std::span<const std::uint8_t> movable) {
   const auto bodyCount = static_cast<std::uint32_t>(movable.size());
   parent_.resize(bodyCount);

@@ -18,6 +18,8 @@ class Islands {
   /// Groups @p rows; @p movable tells which bodies can move.
   void build(std::span<const ContactConstraint> rows, std::span<const std::uint8_t> movable);
 
+  /// Makes room for @p bodies bodies and @p rows contacts without further allocation.
+  void reserve(std::size_t bodies, std::size_t rows);
   /// Number of islands found by the last build.
   [[nodiscard]] std::size_t count() const { return islandStart_.empty() ? 0 : islandStart_.size() - 1; }
   /// The contact indices of island @p i.

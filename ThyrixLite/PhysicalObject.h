@@ -41,7 +41,9 @@ class PhysicalObject : public GraphicalObject {
   real externalTorque = 0;  ///< torque accumulated for the next step, reset after use (N m)
   Vector2 boxMin;     ///< lower corner of the axis-aligned bounding box, updated each step
   Vector2 boxMax;     ///< upper corner of the axis-aligned bounding box, updated each step
-  std::vector<ContactInfo> contacts;  ///< this step's contacts of this object
+  /// This step's contacts of this object: a view into the simulator's contact storage, valid
+  /// until the next step starts.
+  std::span<ContactInfo> contacts;
   bool fixed = false;  ///< a fixed object never moves: it has infinite mass
 
   /// Phase 5 of a step: velocities from the accumulated external force and torque alone,

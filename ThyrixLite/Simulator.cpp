@@ -28,6 +28,7 @@ void Simulator::prepareRegistration(PhysicalObject& object, std::size_t /*index*
   gridBoxes_.reserve(gridShapes_.size() + added);
   bodies_.reserve(objects.size() + 1);
   movable_.reserve(objects.size() + 1);
+  objectContactStart_.reserve(objects.size() + 2);
 }
 
 void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) noexcept {
@@ -46,6 +47,16 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
   movable_.push_back(0);
 }
 
+void Simulator::reserveContacts(std::size_t count) {
+  contacts.items_.reserve(count);
+  objectContacts_.reserve(2 * count);
+  pairs_.reserve(count);
+  rows_.reserve(count);
+  islands_.reserve(objects.size(), count);
+  baraff_.reserve(std::min(count, static_cast<std::size_t>(std::max(settings_.baraffMaxContacts, 0))));
+  lastForces_.reserve(count);
+}
+
 void Simulator::advanceTime() {
   eraseContacts();
   detectContacts();
@@ -61,7 +72,7 @@ void Simulator::advanceTime() {
 
 void Simulator::eraseContacts() {
   contacts.items_.clear();
-  for (PhysicalObject& object : objects) object.contacts.clear();
+  for (PhysicalObject& object : objects) object.contacts = {};
 }
 
 void Simulator::updateGeometry() {
@@ -174,12 +185,28 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
 }
 
 void Simulator::indexContacts() {
+  // Counting sort by object into one array; each object's `contacts` is its slice of it.
+  const std::size_t objectCount = objects.size();
+  objectContactStart_.assign(objectCount + 1, 0);
+  for (const GlobalContactInfo& c : contacts.items_) {
+    ++objectContactStart_[c.bodyA + 1];
+    ++objectContactStart_[c.bodyB + 1];
+  }
+  for (std::size_t i = 0; i < objectCount; ++i) objectContactStart_[i + 1] += objectContactStart_[i];
+  objectContacts_.resize(2 * contacts.size());
   for (std::uint32_t k = 0; k < contacts.size(); ++k) {
     const GlobalContactInfo& c = contacts.items_[k];
-    c.objectA->contacts.push_back(
-        {k, c.objectB, c.primitiveA, c.primitiveB, c.point, -c.normal, c.depth, 0});
-    c.objectB->contacts.push_back(
-        {k, c.objectA, c.primitiveB, c.primitiveA, c.point, c.normal, c.depth, 0});
+    objectContacts_[objectContactStart_[c.bodyA]++] =
+        ContactInfo{k, c.objectB, c.primitiveA, c.primitiveB, c.point, -c.normal, c.depth, 0};
+    objectContacts_[objectContactStart_[c.bodyB]++] =
+        ContactInfo{k, c.objectA, c.primitiveB, c.primitiveA, c.point, c.normal, c.depth, 0};
+  }
+  // The fill advanced each start to the next object's start: walk back to slice.
+  std::uint32_t begin = 0;
+  for (std::size_t i = 0; i < objectCount; ++i) {
+    const std::uint32_t end = objectContactStart_[i];
+    objects[i].contacts = std::span(objectContacts_).subspan(begin, end - begin);
+    begin = end;
   }
 }
 
@@ -229,7 +256,10 @@ void Simulator::applyMouseForce() {
 void Simulator::solveContacts() {
   statistics_.islands = statistics_.solvedIslands = 0;
   statistics_.gaussSeidelSweeps = statistics_.baraffPivots = statistics_.baraffFallbacks = 0;
-  if (contacts.empty()) return;
+  if (contacts.empty()) {
+    lastForces_.reset(0);
+    return;
+  }
 
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const PhysicalObject& object = objects[i];
@@ -262,9 +292,13 @@ void Simulator::solveContacts() {
     object.v = bodies_[i].v;
     object.omega = bodies_[i].omega;
   }
-  for (std::size_t k = 0; k < contacts.size(); ++k) contacts.items_[k].force = rows_[k].force;
-  for (PhysicalObject& object : objects)
-    for (ContactInfo& info : object.contacts) info.force = rows_[info.index].force;
+  lastForces_.reset(contacts.size());
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    GlobalContactInfo& c = contacts.items_[k];
+    c.force = rows_[k].force;
+    if (c.force > 0) lastForces_.insert(ContactForceCache::key(c.shapeA, c.shapeB, c.feature), c.force);
+  }
+  for (ContactInfo& info : objectContacts_) info.force = rows_[info.index].force;
 }
 
 void Simulator::solveIsland(std::span<const std::uint32_t> island) {
@@ -281,6 +315,14 @@ void Simulator::solveIsland(std::span<const std::uint32_t> island) {
     statistics_.baraffPivots += static_cast<std::size_t>(baraff_.lastPivotCount());
     if (solved) return;
     ++statistics_.baraffFallbacks;
+  }
+  if (settings_.warmStart) {
+    for (const std::uint32_t k : island) {
+      const GlobalContactInfo& c = contacts.items_[k];
+      ContactConstraint& row = rows_[k];
+      row.force = lastForces_.find(ContactForceCache::key(c.shapeA, c.shapeB, c.feature));
+      if (row.force > 0) row.applyImpulse(row.force, bodies_[row.a], bodies_[row.b]);
+    }
   }
   statistics_.gaussSeidelSweeps +=
       static_cast<std::size_t>(GaussSeidelSolver::solve(island, rows_, bodies_, settings_));

@@ -4,6 +4,7 @@
 
 #include <ThyrixLite/BaraffSolver.h>
 #include <ThyrixLite/BroadPhase.h>
+#include <ThyrixLite/ContactForceCache.h>
 #include <ThyrixLite/ContactSolver.h>
 #include <ThyrixLite/Integrator.h>
 #include <ThyrixLite/Islands.h>
@@ -57,6 +58,11 @@ class Simulator : public World {
   void applyMouseForce();
   /// Phase 6: contact forces (the chosen solver, island by island), then final velocities.
   void solveContacts();
+
+  /// Sizes the per-step buffers for up to @p count contacts, so that steps with no more
+  /// contacts than that allocate nothing. Without it the buffers grow to the largest count
+  /// seen (geometrically), after which steps allocate nothing either.
+  void reserveContacts(std::size_t count);
 
   /// The time step (s).
   [[nodiscard]] real timestep() const { return timestep_; }
@@ -134,11 +140,15 @@ class Simulator : public World {
   std::vector<BoxPair> pairs_;
   BroadPhase broadPhase_;
 
+  std::vector<ContactInfo> objectContacts_;        // every object's contacts, object by object
+  std::vector<std::uint32_t> objectContactStart_;  // where each object's contacts begin
+
   std::vector<SolverBody> bodies_;
   std::vector<std::uint8_t> movable_;
   std::vector<ContactConstraint> rows_;
   Islands islands_;
   BaraffSolver baraff_;
+  ContactForceCache lastForces_;
 
   PhysicalObject* dragged_ = nullptr;
   real dragMaxStep_ = 0;  // metres per step, from the dragged body's size

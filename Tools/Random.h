@@ -39,7 +39,9 @@ class Random {
   /// Uniform integer in [low, high], both included; requires low <= high.
   std::int32_t integer(std::int32_t low, std::int32_t high) {
     const auto span = static_cast<std::uint32_t>(static_cast<std::int64_t>(high) - low + 1);
-    return static_cast<std::int32_t>(low + static_cast<std::int64_t>(integer(span)));
+    // The full range [INT32_MIN, INT32_MAX] has 2^32 values: span wraps to 0 and any draw fits.
+    const std::uint32_t offset = span == 0 ? nextUint32() : integer(span);
+    return static_cast<std::int32_t>(low + static_cast<std::int64_t>(offset));
   }
 
   /// True with probability p.

@@ -3,14 +3,15 @@
 // Conventions: the normal goes from A to B, depth = overlap along it (negative: a gap), the
 // point lies midway between the two surfaces, and contacts are reported while gap < margin.
 
+#include "TestTolerances.h"
+
 #include <ThyrixLite/NarrowPhase.h>
 #include <Tools/MTRandom.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
-
-#include "TestTolerances.h"
 
 namespace thyrix {
 namespace {
@@ -648,8 +649,7 @@ TEST(Symmetry, SwappingCapsulesFlipsTheNormal) {
     const Manifold m = collideCapsules(a0, a1, ra, b0, b1, rb, real(0.2));
     const Manifold s = collideCapsules(b0, b1, rb, a0, a1, ra, real(0.2));
     SCOPED_TRACE(trial);
-    // Looser in float: the closest points of the axes come out of a few dozen operations.
-    expectSwapped(m, s, test::isFloat ? real(1e-4) : test::tight * 1000);
+    expectSwapped(m, s, test::tight);
     if (m.count == 2) ++twoPoints;
     if (m.count == 1) ++(m.points[0].depth >= ra + rb ? crossing : single);
   }

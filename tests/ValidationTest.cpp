@@ -249,8 +249,8 @@ TEST_P(RefusedInputTest, NamesTheFieldAndLeavesTheWorldUnchanged) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ValidationTest, RefusedInputTest, ::testing::ValuesIn(badInputs()),
-                         [](const ::testing::TestParamInfo<BadInput>& info) {
-                           return std::string(info.param.name);
+                         [](const ::testing::TestParamInfo<BadInput>& testInfo) {
+                           return std::string(testInfo.param.name);
                          });
 
 TEST(ValidationTest, RefusedDragKeepsTheCurrentDrag) {

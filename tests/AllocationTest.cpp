@@ -1,0 +1,66 @@
+// A warmed-up simulator allocates nothing per step. This executable replaces the global
+// operator new to count allocations; the count is read around the steps under test only.
+
+#include <Scenes.h>
+#include <ThyrixLite/Simulator.h>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <vector>
+#include <new>
+
+namespace {
+std::atomic<long> allocationCount{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  allocationCount.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace thyrix {
+namespace {
+
+class AllocationTest : public ::testing::TestWithParam<ContactSolverKind> {};
+
+TEST_P(AllocationTest, PileOf2000CirclesStepsWithoutAllocating) {
+  Simulator simulator(real(1) / 60);
+  simulator.setContactSolver(GetParam());
+  const auto circles = scenes::addPile(simulator, 2000, 1);
+  // Quasistatic weight m g with g = 1: the circles fall at 1 m/s; after 300 steps the pile has
+  // formed. Frictionless, it keeps compacting slowly (more contacts each step), so the contact
+  // buffers are reserved for the densest packing: 3 contacts per circle, plus the walls.
+  simulator.reserveContacts(3 * 2000 + 200);
+  for (int step = 0; step < 300; ++step) {
+    scenes::push(circles, {0, -1});
+    simulator.advanceTime();
+  }
+  ASSERT_GT(simulator.contacts.size(), 1500u) << "the pile should be in contact";
+  const long before = allocationCount.load();
+  for (int step = 0; step < 100; ++step) {
+    scenes::push(circles, {0, -1});
+    simulator.advanceTime();
+  }
+  EXPECT_EQ(allocationCount.load() - before, 0);
+}
+
+TEST(AllocationCounter, CountsAllocations) {
+  const long before = allocationCount.load();
+  std::vector<int> grown;
+  grown.reserve(static_cast<std::size_t>(::testing::UnitTest::GetInstance()->random_seed()) + 10);
+  EXPECT_EQ(allocationCount.load() - before, 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(BothSolvers, AllocationTest,
+                         ::testing::Values(ContactSolverKind::Baraff, ContactSolverKind::GaussSeidel),
+                         [](const auto& solver) {
+                           return solver.param == ContactSolverKind::Baraff ? "Baraff" : "GaussSeidel";
+                         });
+
+}  // namespace
+}  // namespace thyrix
