@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Installs what building and testing Thyrix needs on Debian 12 (bookworm).
+set -euo pipefail
+packages=(cmake g++ make libgtest-dev libbenchmark-dev)
+if [ "${THYRIX_WITH_GUI:-0}" = 1 ]; then packages+=(libwxgtk3.2-dev); fi
+missing=()
+for p in "${packages[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
+if [ ${#missing[@]} -eq 0 ]; then exit 0; fi
+sudo=""
+if [ "$(id -u)" != 0 ]; then sudo=sudo; fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -q
+$sudo apt-get install -y -q --no-install-recommends "${missing[@]}"

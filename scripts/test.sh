@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Builds and runs every test of Thyrix, warnings as errors:
+#   1. Release, real = double;  2. an installed Thyrix found by find_package from another project;
+#   3. Debug under AddressSanitizer + UndefinedBehaviorSanitizer;  4. Release, real = float.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=$(nproc)
+common=(-DTHYRIX_WARNINGS_AS_ERRORS=ON -DTHYRIX_BUILD_TESTS=ON)
+passed=0
+
+ctest_in() {  # directory: runs its tests and adds them to the total
+  local log
+  log=$(cd "$1" && ctest -j"$jobs" --output-on-failure) || { echo "$log"; exit 1; }
+  echo "$log" | tail -n 3
+  passed=$((passed + $(echo "$log" | sed -n 's/.*tests failed out of \([0-9]*\).*/\1/p')))
+}
+
+run() {  # name, then cmake options
+  local name=$1; shift
+  echo "=== $name ==="
+  cmake -S . -B "build/$name" "${common[@]}" "$@" >/dev/null
+  cmake --build "build/$name" -j"$jobs"
+  ctest_in "build/$name"
+}
+
+run release -DCMAKE_BUILD_TYPE=Release
+
+echo "=== find_package(Thyrix) from another project ==="
+rm -rf build/install build/consumer
+cmake --install build/release --prefix build/install >/dev/null
+cmake -S tests/consumer -B build/consumer -DCMAKE_PREFIX_PATH="$PWD/build/install" >/dev/null
+cmake --build build/consumer -j"$jobs" >/dev/null
+ctest_in build/consumer
+
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+run sanitize -DCMAKE_BUILD_TYPE=Debug -DTHYRIX_SANITIZE=address,undefined
+run float -DCMAKE_BUILD_TYPE=Release -DTHYRIX_REAL=float
+
+echo "total: $passed passed, 0 failed"
