@@ -9,7 +9,8 @@ namespace {
 /// Tolerance, relative to the scale of A, below which a rate counts as zero.
 constexpr real relativeTolerance = std::is_same_v<real, float> ? real(1e-5) : real(1e-11);
 
-/// `J_i^X D_X^-1 (J_j^X)^T` for one body X shared by rows i and j, with signs sI, sJ (A: -1, B: +1).
+/// `J_i^X D_X^-1 (J_j^X)^T` for one body X shared by rows i and j, with signs sI, sJ (A: -1, B:
+/// +1).
 real coupling(const ContactConstraint& i, real signI, real armI, const ContactConstraint& j,
               real signJ, real armJ, const SolverBody& body) {
   return signI * signJ *
@@ -44,7 +45,8 @@ void BaraffSolver::buildMatrix(std::span<const std::uint32_t> island,
 void BaraffSolver::reserve(std::size_t contacts) {
   matrix_.reserve(contacts * contacts);
   factor_.reserve(contacts * contacts);
-  for (auto* buffer : {&slack_, &force_, &direction_, &slackRate_, &solution_}) buffer->reserve(contacts);
+  for (auto* buffer : {&slack_, &force_, &direction_, &slackRate_, &solution_})
+    buffer->reserve(contacts);
   state_.reserve(contacts);
   clamped_.reserve(contacts);
 }

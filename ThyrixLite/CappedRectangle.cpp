@@ -12,8 +12,9 @@ real checked(real value, const char* field) {
 }  // namespace
 
 CappedRectangle::CappedRectangle(real l, real R, real mass)
-    : Primitive(ShapeType::Capsule, checked(R, "CappedRectangle.R"), checked(l, "CappedRectangle.l"),
-                checked(mass, "CappedRectangle.mass"), momentOfInertia(l, R, mass)) {}
+    : Primitive(ShapeType::Capsule, checked(R, "CappedRectangle.R"),
+                checked(l, "CappedRectangle.l"), checked(mass, "CappedRectangle.mass"),
+                momentOfInertia(l, R, mass)) {}
 
 real CappedRectangle::momentOfInertia(real l, real R, real mass) {
   // Mass splits by area between the 2l x 2R rectangle and the two half-disks (one disk).

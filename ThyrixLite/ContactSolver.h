@@ -44,9 +44,9 @@ struct ContactSolverSettings {
 /// A body as the solvers see it: the velocity being solved for and the inverse quasistatic mass.
 /// Fixed bodies have zero inverse mass and inertia, so contacts never move them.
 struct SolverBody {
-  Vector2 v;             ///< linear velocity
-  real omega = 0;        ///< angular velocity
-  real inverseMass = 0;  ///< 1 / m, 0 when fixed
+  Vector2 v;                ///< linear velocity
+  real omega = 0;           ///< angular velocity
+  real inverseMass = 0;     ///< 1 / m, 0 when fixed
   real inverseInertia = 0;  ///< 1 / I, 0 when fixed
 };
 

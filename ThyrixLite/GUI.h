@@ -1,6 +1,7 @@
 #pragma once
 /// @file GUI.h
-/// @brief The abstract drawing interface: the engine draws through it and never knows the front-end.
+/// @brief The abstract drawing interface: the engine draws through it and never knows the
+/// front-end.
 
 #include <ThyrixLite/Color.h>
 #include <ThyrixLite/Vector2.h>

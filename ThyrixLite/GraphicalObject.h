@@ -20,8 +20,8 @@ class GraphicalObject {
   /// Draws the object in world coordinates.
   virtual void draw(GUI& gui) const = 0;
 
-  Color color = colors::object;         ///< fill colour
-  Color outlineColor = colors::black;   ///< outline colour
+  Color color = colors::object;        ///< fill colour
+  Color outlineColor = colors::black;  ///< outline colour
 };
 
 }  // namespace thyrix

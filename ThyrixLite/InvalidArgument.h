@@ -28,7 +28,8 @@ class InvalidArgument : public std::invalid_argument {
 
 /// Throws InvalidArgument naming @p field unless @p value is finite.
 inline void requireFinite(real value, const char* field) {
-  if (!std::isfinite(value)) throw InvalidArgument(field, "must be finite (got " + std::to_string(value) + ")");
+  if (!std::isfinite(value))
+    throw InvalidArgument(field, "must be finite (got " + std::to_string(value) + ")");
 }
 
 /// Throws InvalidArgument naming @p field unless both coordinates of @p value are finite.

@@ -21,7 +21,8 @@ void Islands::reserve(std::size_t bodies, std::size_t rows) {
   contacts_.reserve(rows);
 }
 
-void Islands::build(std::span<const ContactConstraint> rows, std::span<const std::uint8_t> movable) {
+void Islands::build(std::span<const ContactConstraint> rows,
+                    std::span<const std::uint8_t> movable) {
   const auto bodyCount = static_cast<std::uint32_t>(movable.size());
   parent_.resize(bodyCount);
   std::iota(parent_.begin(), parent_.end(), 0u);

@@ -21,7 +21,9 @@ class Islands {
   /// Makes room for @p bodies bodies and @p rows contacts without further allocation.
   void reserve(std::size_t bodies, std::size_t rows);
   /// Number of islands found by the last build.
-  [[nodiscard]] std::size_t count() const { return islandStart_.empty() ? 0 : islandStart_.size() - 1; }
+  [[nodiscard]] std::size_t count() const {
+    return islandStart_.empty() ? 0 : islandStart_.size() - 1;
+  }
   /// The contact indices of island @p i.
   [[nodiscard]] std::span<const std::uint32_t> island(std::size_t i) const {
     return std::span(contacts_).subspan(islandStart_[i], islandStart_[i + 1] - islandStart_[i]);
@@ -30,8 +32,8 @@ class Islands {
  private:
   std::uint32_t find(std::uint32_t body);
 
-  std::vector<std::uint32_t> parent_;       // union-find forest over bodies
-  std::vector<std::uint32_t> islandOfBody_; // dense island number of each root, or none
+  std::vector<std::uint32_t> parent_;        // union-find forest over bodies
+  std::vector<std::uint32_t> islandOfBody_;  // dense island number of each root, or none
   std::vector<std::uint32_t> islandOfRow_;
   std::vector<std::uint32_t> islandStart_;
   std::vector<std::uint32_t> cursor_;

@@ -25,8 +25,7 @@ Vector2 support(Vector2 a, Vector2 b, Vector2 direction) {
 }
 
 /// Capsules whose axes intersect: separation along the normal of either axis, the cheaper one.
-Manifold collideCrossingCapsules(Vector2 a0, Vector2 a1, real ra, Vector2 b0, Vector2 b1,
-                                 real rb) {
+Manifold collideCrossingCapsules(Vector2 a0, Vector2 a1, real ra, Vector2 b0, Vector2 b1, real rb) {
   Manifold best;
   real bestDepth = realMax;
   const Vector2 axes[2] = {(a1 - a0).normalized().perpendicular(),
@@ -88,7 +87,8 @@ Manifold collideCircles(Vector2 centreA, real radiusA, Vector2 centreB, real rad
   const Vector2 d = centreB - centreA;
   const real distance = d.length();
   if (distance - radiusA - radiusB >= margin) return {};
-  const Vector2 n = distance > relativeTolerance * (radiusA + radiusB) ? d / distance : Vector2{1, 0};
+  const Vector2 n =
+      distance > relativeTolerance * (radiusA + radiusB) ? d / distance : Vector2{1, 0};
   return single(n, centreA + n * radiusA, centreB - n * radiusB);
 }
 

@@ -34,8 +34,8 @@ Manifold collideHalfPlaneCircle(Vector2 point, Vector2 normal, Vector2 centre, r
                                 real margin);
 
 /// A border and a capsule with end-cap centres @p b0, @p b1: one point per end within reach.
-Manifold collideHalfPlaneCapsule(Vector2 point, Vector2 normal, Vector2 b0, Vector2 b1,
-                                 real radius, real margin);
+Manifold collideHalfPlaneCapsule(Vector2 point, Vector2 normal, Vector2 b0, Vector2 b1, real radius,
+                                 real margin);
 
 /// Two circles. Coincident centres get the normal +x.
 Manifold collideCircles(Vector2 centreA, real radiusA, Vector2 centreB, real radiusB, real margin);
@@ -46,8 +46,8 @@ Manifold collideCircleCapsule(Vector2 centre, real radiusA, Vector2 b0, Vector2 
 
 /// Two capsules. Nearly parallel overlapping capsules get two points; crossing axes are
 /// separated along the axis normal that needs the least motion.
-Manifold collideCapsules(Vector2 a0, Vector2 a1, real radiusA, Vector2 b0, Vector2 b1,
-                         real radiusB, real margin);
+Manifold collideCapsules(Vector2 a0, Vector2 a1, real radiusA, Vector2 b0, Vector2 b1, real radiusB,
+                         real margin);
 
 /// The point of segment @p a - @p b closest to @p p.
 Vector2 closestPointOnSegment(Vector2 a, Vector2 b, Vector2 p);

@@ -26,16 +26,20 @@ void PhysicalObject::integrate(real dt) {
 void PhysicalObject::validate() const {
   const std::string type = typeName();
   const auto field = [&](const char* name) { return type + "." + name; };
-  if (!std::isfinite(r.x) || !std::isfinite(r.y)) throw InvalidArgument(field("r"), "must be finite");
+  if (!std::isfinite(r.x) || !std::isfinite(r.y))
+    throw InvalidArgument(field("r"), "must be finite");
   if (!std::isfinite(alpha)) throw InvalidArgument(field("alpha"), "must be finite");
   if (!std::isfinite(externalForce.x) || !std::isfinite(externalForce.y))
     throw InvalidArgument(field("externalForce"), "must be finite");
-  if (!std::isfinite(externalTorque)) throw InvalidArgument(field("externalTorque"), "must be finite");
+  if (!std::isfinite(externalTorque))
+    throw InvalidArgument(field("externalTorque"), "must be finite");
   if (!fixed) {
     if (!(m > 0) || !std::isfinite(m))
-      throw InvalidArgument(field("m"), "must be positive and finite (got " + std::to_string(m) + ")");
+      throw InvalidArgument(field("m"),
+                            "must be positive and finite (got " + std::to_string(m) + ")");
     if (!(I > 0) || !std::isfinite(I))
-      throw InvalidArgument(field("I"), "must be positive and finite (got " + std::to_string(I) + ")");
+      throw InvalidArgument(field("I"),
+                            "must be positive and finite (got " + std::to_string(I) + ")");
   }
 }
 

@@ -31,16 +31,16 @@ class PhysicalObject : public GraphicalObject {
   PhysicalObject& operator=(const PhysicalObject&) = delete;
   ~PhysicalObject() override = default;
 
-  Vector2 r;          ///< position of the centre of mass, world coordinates (m)
-  Vector2 v;          ///< linear velocity (m/s), computed each step
-  real alpha = 0;     ///< orientation (rad, counter-clockwise)
-  real omega = 0;     ///< angular velocity (rad/s), computed each step
-  real m;             ///< quasistatic mass: force per unit velocity (N s/m)
-  real I;             ///< moment of inertia about the centre of mass: torque per unit rate
+  Vector2 r;                ///< position of the centre of mass, world coordinates (m)
+  Vector2 v;                ///< linear velocity (m/s), computed each step
+  real alpha = 0;           ///< orientation (rad, counter-clockwise)
+  real omega = 0;           ///< angular velocity (rad/s), computed each step
+  real m;                   ///< quasistatic mass: force per unit velocity (N s/m)
+  real I;                   ///< moment of inertia about the centre of mass: torque per unit rate
   Vector2 externalForce;    ///< force accumulated for the next step, reset after use (N)
   real externalTorque = 0;  ///< torque accumulated for the next step, reset after use (N m)
-  Vector2 boxMin;     ///< lower corner of the axis-aligned bounding box, updated each step
-  Vector2 boxMax;     ///< upper corner of the axis-aligned bounding box, updated each step
+  Vector2 boxMin;           ///< lower corner of the axis-aligned bounding box, updated each step
+  Vector2 boxMax;           ///< upper corner of the axis-aligned bounding box, updated each step
   /// This step's contacts of this object: a view into the simulator's contact storage, valid
   /// until the next step starts.
   std::span<ContactInfo> contacts;

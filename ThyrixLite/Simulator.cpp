@@ -53,7 +53,8 @@ void Simulator::reserveContacts(std::size_t count) {
   pairs_.reserve(count);
   rows_.reserve(count);
   islands_.reserve(objects.size(), count);
-  baraff_.reserve(std::min(count, static_cast<std::size_t>(std::max(settings_.baraffMaxContacts, 0))));
+  baraff_.reserve(
+      std::min(count, static_cast<std::size_t>(std::max(settings_.baraffMaxContacts, 0))));
   lastForces_.reserve(count);
 }
 
@@ -192,7 +193,8 @@ void Simulator::indexContacts() {
     ++objectContactStart_[c.bodyA + 1];
     ++objectContactStart_[c.bodyB + 1];
   }
-  for (std::size_t i = 0; i < objectCount; ++i) objectContactStart_[i + 1] += objectContactStart_[i];
+  for (std::size_t i = 0; i < objectCount; ++i)
+    objectContactStart_[i + 1] += objectContactStart_[i];
   objectContacts_.resize(2 * contacts.size());
   for (std::uint32_t k = 0; k < contacts.size(); ++k) {
     const GlobalContactInfo& c = contacts.items_[k];
@@ -296,7 +298,8 @@ void Simulator::solveContacts() {
   for (std::size_t k = 0; k < contacts.size(); ++k) {
     GlobalContactInfo& c = contacts.items_[k];
     c.force = rows_[k].force;
-    if (c.force > 0) lastForces_.insert(ContactForceCache::key(c.shapeA, c.shapeB, c.feature), c.force);
+    if (c.force > 0)
+      lastForces_.insert(ContactForceCache::key(c.shapeA, c.shapeB, c.feature), c.force);
   }
   for (ContactInfo& info : objectContacts_) info.force = rows_[info.index].force;
 }

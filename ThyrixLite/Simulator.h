@@ -19,12 +19,12 @@ namespace thyrix {
 
 /// What the last step did, for monitoring and benchmarks.
 struct StepStatistics {
-  std::size_t contacts = 0;          ///< contact points detected
-  std::size_t islands = 0;           ///< islands with at least one contact
-  std::size_t solvedIslands = 0;     ///< islands whose contacts needed forces
-  std::size_t gaussSeidelSweeps = 0; ///< sweeps summed over the islands Gauss-Seidel solved
-  std::size_t baraffPivots = 0;      ///< pivots summed over the islands Baraff solved
-  std::size_t baraffFallbacks = 0;   ///< islands Baraff gave to Gauss-Seidel
+  std::size_t contacts = 0;           ///< contact points detected
+  std::size_t islands = 0;            ///< islands with at least one contact
+  std::size_t solvedIslands = 0;      ///< islands whose contacts needed forces
+  std::size_t gaussSeidelSweeps = 0;  ///< sweeps summed over the islands Gauss-Seidel solved
+  std::size_t baraffPivots = 0;       ///< pivots summed over the islands Baraff solved
+  std::size_t baraffFallbacks = 0;    ///< islands Baraff gave to Gauss-Seidel
 };
 
 /// A World that advances in time with quasistatic dynamics.
@@ -50,7 +50,10 @@ class Simulator : public World {
   /// Advances the world by one time step.
   void advanceTime();
 
+  /// Phase 1: erases the last step's contacts (kept until now so a GUI can draw them).
+  void eraseContacts();
   /// Phase 2: updates bounding boxes, finds the contacts (broad then narrow phase).
+  /// Appends to `contacts`: call eraseContacts() first when running phases by hand.
   void detectContacts();
   /// Phase 3: lists each contact in its two objects' `contacts`.
   void indexContacts();
@@ -120,7 +123,6 @@ class Simulator : public World {
     real margin;
   };
 
-  void eraseContacts();
   void updateGeometry();
   void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void solveIsland(std::span<const std::uint32_t> island);

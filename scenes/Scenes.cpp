@@ -41,9 +41,10 @@ std::vector<PhysicalObject*> addRandomCircles(Simulator& simulator, int count, r
   return circles;
 }
 
-std::vector<PhysicalObject*> addPile(Simulator& simulator, int count, std::uint32_t seed) {
+std::vector<PhysicalObject*> addPile(Simulator& simulator, int count, std::uint32_t seed,
+                                     int columns) {
   MTRandom random(seed);
-  const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));
+  if (columns <= 0) columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));
   const real pitch = real(1.2);
   const real width = pitch * static_cast<real>(columns) + real(0.2);
   simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
@@ -72,10 +73,12 @@ std::vector<PhysicalObject*> addMixedPile(Simulator& simulator, int count, std::
       body = &simulator.registerObject(std::make_unique<CappedRectangle>(
           real(0.3), real(0.15), static_cast<real>(random.uniform(0.5, 2.0))));
     } else {
-      body = &simulator.registerObject(std::make_unique<Circle>(
-          static_cast<real>(random.uniform(0.15, 0.3)), static_cast<real>(random.uniform(0.5, 2.0))));
+      body = &simulator.registerObject(
+          std::make_unique<Circle>(static_cast<real>(random.uniform(0.15, 0.3)),
+                                   static_cast<real>(random.uniform(0.5, 2.0))));
     }
-    body->r = {static_cast<real>(random.uniform(0.4, 2.6)), static_cast<real>(random.uniform(0.4, 2.6))};
+    body->r = {static_cast<real>(random.uniform(0.4, 2.6)),
+               static_cast<real>(random.uniform(0.4, 2.6))};
     body->alpha = static_cast<real>(random.uniform(-3.14, 3.14));
     bodies.push_back(body);
   }
@@ -109,7 +112,8 @@ std::uint64_t stateHash(const Simulator& simulator) {
 
 real largestOverlap(const Simulator& simulator) {
   real overlap = 0;
-  for (const GlobalContactInfo& contact : simulator.contacts) overlap = std::max(overlap, contact.depth);
+  for (const GlobalContactInfo& contact : simulator.contacts)
+    overlap = std::max(overlap, contact.depth);
   return overlap;
 }
 

@@ -19,9 +19,11 @@ void addWalls(Simulator& simulator, real width, real height);
 std::vector<PhysicalObject*> addRandomCircles(Simulator& simulator, int count, real radius,
                                               real size, std::uint32_t seed);
 
-/// A pile: @p count circles of radius 0.5 in a grid of ceil(sqrt count) columns at pitch 1.2 with
-/// x jitter +-0.1, inside an open box (floor at y = 0 and two walls). Returns the circles.
-std::vector<PhysicalObject*> addPile(Simulator& simulator, int count, std::uint32_t seed);
+/// A pile: @p count circles of radius 0.5 in a grid of @p columns columns (0: ceil(sqrt count))
+/// at pitch 1.2 with x jitter +-0.1, inside an open box (floor at y = 0 and two walls).
+/// Returns the circles.
+std::vector<PhysicalObject*> addPile(Simulator& simulator, int count, std::uint32_t seed,
+                                     int columns = 0);
 
 /// A mixed pile of circles and capsules for solver tests: @p count bodies jammed into the
 /// corner of a box, overlapping slightly at random. Returns the bodies.

@@ -8,8 +8,8 @@
 
 #include <atomic>
 #include <cstdlib>
-#include <vector>
 #include <new>
+#include <vector>
 
 namespace {
 std::atomic<long> allocationCount{0};
@@ -57,9 +57,11 @@ TEST(AllocationCounter, CountsAllocations) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BothSolvers, AllocationTest,
-                         ::testing::Values(ContactSolverKind::Baraff, ContactSolverKind::GaussSeidel),
+                         ::testing::Values(ContactSolverKind::Baraff,
+                                           ContactSolverKind::GaussSeidel),
                          [](const auto& solver) {
-                           return solver.param == ContactSolverKind::Baraff ? "Baraff" : "GaussSeidel";
+                           return solver.param == ContactSolverKind::Baraff ? "Baraff"
+                                                                            : "GaussSeidel";
                          });
 
 }  // namespace

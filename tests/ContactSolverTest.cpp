@@ -35,7 +35,8 @@ Problem makeProblem(std::uint32_t seed, int count, Simulator& simulator) {
   const auto bodies = scenes::addMixedPile(simulator, count, seed);
   MTRandom random(seed + 1000);
   for (PhysicalObject* body : bodies) {
-    body->externalForce = {static_cast<real>(random.uniform(-3, 0.5)), static_cast<real>(random.uniform(-3, 0.5))};
+    body->externalForce = {static_cast<real>(random.uniform(-3, 0.5)),
+                           static_cast<real>(random.uniform(-3, 0.5))};
     body->externalTorque = static_cast<real>(random.uniform(-0.5, 0.5));
   }
   simulator.detectContacts();
@@ -43,7 +44,8 @@ Problem makeProblem(std::uint32_t seed, int count, Simulator& simulator) {
 
   Problem problem;
   for (const PhysicalObject& object : simulator.objects)
-    problem.bodies.push_back({object.v, object.omega, object.inverseMass(), object.inverseInertia()});
+    problem.bodies.push_back(
+        {object.v, object.omega, object.inverseMass(), object.inverseInertia()});
   const real dt = simulator.timestep();
   for (const GlobalContactInfo& c : simulator.contacts) {
     ContactConstraint row;
@@ -52,7 +54,8 @@ Problem makeProblem(std::uint32_t seed, int count, Simulator& simulator) {
     row.normal = c.normal;
     row.armA = cross(c.point - c.objectA->r, c.normal);
     row.armB = cross(c.point - c.objectB->r, c.normal);
-    row.target = c.depth > 0 ? simulator.solverSettings().penetrationCorrection * c.depth / dt : c.depth / dt;
+    row.target = c.depth > 0 ? simulator.solverSettings().penetrationCorrection * c.depth / dt
+                             : c.depth / dt;
     problem.rows.push_back(row);
   }
   problem.all.resize(problem.rows.size());
@@ -75,7 +78,8 @@ void expectComplementarity(const Problem& p, real tolerance) {
     EXPECT_GE(slack, -tolerance) << "w >= c";
     // f (w - c) = 0, with f measured as the velocity it causes at its own contact.
     EXPECT_LE(std::abs(row.force * row.selfResponse(p.bodies[row.a], p.bodies[row.b]) * slack),
-              tolerance * (tolerance + std::abs(slack) + row.force * row.selfResponse(p.bodies[row.a], p.bodies[row.b])))
+              tolerance * (tolerance + std::abs(slack) +
+                           row.force * row.selfResponse(p.bodies[row.a], p.bodies[row.b])))
         << "complementarity";
     if (row.force > tolerance) {
       EXPECT_NEAR(slack, 0, tolerance);
@@ -110,8 +114,10 @@ bool referenceSolve(Problem& p) {
     std::vector<SolverBody> unit = p.bodies;
     for (SolverBody& body : unit) body.v = {}, body.omega = 0;
     p.rows[i].applyImpulse(1, unit[p.rows[i].a], unit[p.rows[i].b]);
-    for (std::size_t j = 0; j < m; ++j) A[j][i] = p.rows[j].normalVelocity(unit[p.rows[j].a], unit[p.rows[j].b]);
-    b[i] = p.rows[i].normalVelocity(p.bodies[p.rows[i].a], p.bodies[p.rows[i].b]) - p.rows[i].target;
+    for (std::size_t j = 0; j < m; ++j)
+      A[j][i] = p.rows[j].normalVelocity(unit[p.rows[j].a], unit[p.rows[j].b]);
+    b[i] =
+        p.rows[i].normalVelocity(p.bodies[p.rows[i].a], p.bodies[p.rows[i].b]) - p.rows[i].target;
   }
   for (std::uint32_t mask = 0; mask < (1u << m); ++mask) {
     std::vector<std::size_t> set;
@@ -169,7 +175,8 @@ TEST_P(RandomPile, BothSolversSatisfyComplementarityAndAgreeOnVelocities) {
   BaraffSolver solver;
   ASSERT_TRUE(solver.solve(baraff.all, baraff.rows, baraff.bodies));
   Problem gaussSeidel = original;
-  GaussSeidelSolver::solve(gaussSeidel.all, gaussSeidel.rows, gaussSeidel.bodies, convergedSettings());
+  GaussSeidelSolver::solve(gaussSeidel.all, gaussSeidel.rows, gaussSeidel.bodies,
+                           convergedSettings());
 
   const real scale = velocityScale(original);
   const real tolerance = (test::isFloat ? real(2e-3) : real(1e-8)) * scale;
@@ -201,7 +208,8 @@ TEST(BaraffSolver, RedundantContactsOfAFlatCapsuleGiveTheUniqueVelocity) {
   // adds a third, redundant path. Pushed down, nothing may move down.
   Simulator simulator;
   simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
-  auto& capsule = simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.2), real(1)));
+  auto& capsule =
+      simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.2), real(1)));
   capsule.r = {0, real(0.2)};
   auto& circle = simulator.registerObject(std::make_unique<Circle>(real(0.2), real(1)));
   circle.r = {real(0.3), real(0.6)};

@@ -40,7 +40,8 @@ TEST_P(QuasistaticTest, VelocityIsForceOverMassAndStopsWithTheForce) {
 
 TEST_P(QuasistaticTest, TorqueTurnsAndStops) {
   // Capsule I from its shape: a torque tau turns it at tau / I, then it stops.
-  auto& capsule = simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.25), real(3)));
+  auto& capsule =
+      simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.25), real(3)));
   capsule.externalTorque = 2;
   simulator.advanceTime();
   EXPECT_NEAR(capsule.omega, 2 / capsule.I, tight);
@@ -85,7 +86,8 @@ TEST_P(QuasistaticTest, PushedRowMovesAtTotalForceOverTotalMass) {
 TEST_P(QuasistaticTest, CircleRestsOnCapsuleSideAndSlidesOffItsCap) {
   // A fixed horizontal capsule; a circle pressed down onto its flat side stays on it, pressed
   // down beyond the cap's centre it slides off around the cap.
-  auto& capsule = simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.25), real(1)));
+  auto& capsule =
+      simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.25), real(1)));
   capsule.fixed = true;
   auto& circle = simulator.registerObject(std::make_unique<Circle>(real(0.25), real(1)));
   circle.r = {real(0.3), real(0.5)};
@@ -108,7 +110,8 @@ TEST_P(QuasistaticTest, CircleRestsOnCapsuleSideAndSlidesOffItsCap) {
 }
 
 TEST_P(QuasistaticTest, PushingCapsuleEndTurnsIt) {
-  auto& capsule = simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.25), real(2)));
+  auto& capsule =
+      simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.25), real(2)));
   // A force F along +y at the +x end: v = F / m, omega = l F / I.
   capsule.applyForce({0, 1}, {1, 0});
   simulator.advanceTime();
@@ -118,9 +121,11 @@ TEST_P(QuasistaticTest, PushingCapsuleEndTurnsIt) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BothSolvers, QuasistaticTest,
-                         ::testing::Values(ContactSolverKind::Baraff, ContactSolverKind::GaussSeidel),
+                         ::testing::Values(ContactSolverKind::Baraff,
+                                           ContactSolverKind::GaussSeidel),
                          [](const auto& solver) {
-                           return solver.param == ContactSolverKind::Baraff ? "Baraff" : "GaussSeidel";
+                           return solver.param == ContactSolverKind::Baraff ? "Baraff"
+                                                                            : "GaussSeidel";
                          });
 
 }  // namespace

@@ -30,11 +30,13 @@ std::vector<PhysicalObject*> addCornerPile(Simulator& simulator, std::uint32_t s
   for (int i = 0; i < 30; ++i) {
     PhysicalObject* body;
     if (i % 4 == 3)
-      body = &simulator.registerObject(std::make_unique<CappedRectangle>(real(0.3), real(0.2), real(1.5)));
+      body = &simulator.registerObject(
+          std::make_unique<CappedRectangle>(real(0.3), real(0.2), real(1.5)));
     else
       body = &simulator.registerObject(std::make_unique<Circle>(
           static_cast<real>(random.uniform(0.2, 0.3)), static_cast<real>(random.uniform(0.5, 2))));
-    body->r = {real(0.8) + real(0.95) * static_cast<real>(i % 5), real(0.5) + real(0.95) * static_cast<real>(i / 5)};
+    body->r = {real(0.8) + real(0.95) * static_cast<real>(i % 5),
+               real(0.5) + real(0.95) * static_cast<real>(i / 5)};
     body->alpha = static_cast<real>(random.uniform(-1.5, 1.5));
     bodies.push_back(body);
   }
@@ -52,7 +54,8 @@ TEST_P(SimulatorTest, SameSceneGivesBitIdenticalRuns) {
     MTRandom random(3);
     for (int step = 0; step < 500; ++step) {
       for (PhysicalObject* body : bodies)
-        body->externalForce = {static_cast<real>(random.uniform(-2, 2)), static_cast<real>(random.uniform(-2, 2))};
+        body->externalForce = {static_cast<real>(random.uniform(-2, 2)),
+                               static_cast<real>(random.uniform(-2, 2))};
       simulator.advanceTime();
     }
     hash = scenes::stateHash(simulator);
@@ -85,7 +88,8 @@ TEST_P(SimulatorTest, PilePushedIntoCornerNeverOverlapsBeyondTolerance) {
 TEST_P(SimulatorTest, DragPullsBodyToMouseAndStopsOnRelease) {
   Simulator simulator;
   simulator.setContactSolver(GetParam());
-  auto& capsule = simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.2), real(2)));
+  auto& capsule =
+      simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.2), real(2)));
   const Vector2 grab{real(0.8), 0};  // near one end: pulling turns the body too
   simulator.startDrag(capsule, grab);
   const Vector2 mouse{3, 2};
@@ -156,13 +160,15 @@ TEST_P(SimulatorTest, ContactsAreIndexedInBothObjectsWithOpposedNormalsAndForces
 }
 
 INSTANTIATE_TEST_SUITE_P(BothSolvers, SimulatorTest,
-                         ::testing::Values(ContactSolverKind::Baraff, ContactSolverKind::GaussSeidel),
+                         ::testing::Values(ContactSolverKind::Baraff,
+                                           ContactSolverKind::GaussSeidel),
                          solverName);
 
 TEST(Simulator, ContactIdentityIsStableWhileTheSameFeaturesTouch) {
   Simulator simulator;
   simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
-  auto& capsule = simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.2), real(1)));
+  auto& capsule =
+      simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.2), real(1)));
   capsule.r = {0, real(0.2)};
   capsule.externalForce = {1, -1};
   simulator.advanceTime();

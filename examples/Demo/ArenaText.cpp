@@ -52,16 +52,25 @@ Options parse(int argc, char** argv) {
       std::fputs(usage, stdout);
       std::exit(0);
     }
-    if (i + 1 >= argc) throw std::invalid_argument("unknown option or missing value: " + std::string(option));
+    if (i + 1 >= argc)
+      throw std::invalid_argument("unknown option or missing value: " + std::string(option));
     const char* value = argv[++i];
-    if (option == "--steps") options.steps = parseNumber<long>(option, value, 0);
-    else if (option == "--seed") options.seed = parseNumber<unsigned>(option, value, 0);
-    else if (option == "--bodies") options.bodies = parseNumber<int>(option, value, 1);
-    else if (option == "--every") options.every = parseNumber<long>(option, value, 1);
+    if (option == "--steps")
+      options.steps = parseNumber<long>(option, value, 0);
+    else if (option == "--seed")
+      options.seed = parseNumber<unsigned>(option, value, 0);
+    else if (option == "--bodies")
+      options.bodies = parseNumber<int>(option, value, 1);
+    else if (option == "--every")
+      options.every = parseNumber<long>(option, value, 1);
     else if (option == "--solver") {
-      if (std::strcmp(value, "baraff") == 0) options.solver = thyrix::ContactSolverKind::Baraff;
-      else if (std::strcmp(value, "gauss-seidel") == 0) options.solver = thyrix::ContactSolverKind::GaussSeidel;
-      else throw std::invalid_argument("--solver must be baraff or gauss-seidel, not '" + std::string(value) + "'");
+      if (std::strcmp(value, "baraff") == 0)
+        options.solver = thyrix::ContactSolverKind::Baraff;
+      else if (std::strcmp(value, "gauss-seidel") == 0)
+        options.solver = thyrix::ContactSolverKind::GaussSeidel;
+      else
+        throw std::invalid_argument("--solver must be baraff or gauss-seidel, not '" +
+                                    std::string(value) + "'");
     } else {
       throw std::invalid_argument("unknown option: " + std::string(option));
     }
@@ -83,9 +92,11 @@ int main(int argc, char** argv) {
   Simulator simulator(real(0.01));
   simulator.setContactSolver(options.solver);
   scenes::addWalls(simulator, 10, 10);
-  const auto circles = scenes::addRandomCircles(simulator, options.bodies, real(0.25), 10, options.seed);
+  const auto circles =
+      scenes::addRandomCircles(simulator, options.bodies, real(0.25), 10, options.seed);
   // The first quarter of the circles are pushed; the rest are obstacles.
-  const std::vector<PhysicalObject*> pushed(circles.begin(), circles.begin() + (circles.size() + 3) / 4);
+  const std::vector<PhysicalObject*> pushed(circles.begin(),
+                                            circles.begin() + (circles.size() + 3) / 4);
   for (long step = 1; step <= options.steps; ++step) {
     const real angle = static_cast<real>((step - 1) / 100) * real(2.39996323);  // golden angle
     scenes::push(pushed, Vector2{std::cos(angle), std::sin(angle)});
@@ -94,7 +105,8 @@ int main(int argc, char** argv) {
       Vector2 centre;
       for (const PhysicalObject* body : pushed) centre += body->r;
       centre = centre / static_cast<real>(pushed.size());
-      std::printf("%ld %.6f %.6f\n", step, static_cast<double>(centre.x), static_cast<double>(centre.y));
+      std::printf("%ld %.6f %.6f\n", step, static_cast<double>(centre.x),
+                  static_cast<double>(centre.y));
     }
   }
   return 0;

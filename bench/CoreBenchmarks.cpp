@@ -1,0 +1,69 @@
+// Benchmarks of the ThyrixLite core: the step of a settled pile as the body count grows, and
+// the broad phase alone on the same layouts, to show both scale near-linearly.
+
+#include <Scenes.h>
+#include <ThyrixLite/BroadPhase.h>
+#include <ThyrixLite/Simulator.h>
+
+#include <benchmark/benchmark.h>
+
+namespace thyrix {
+namespace {
+
+/// A pile 10 circles high and count / 10 wide, after 200 untimed steps at 1 m/s under their
+/// weight: it has settled, and its contacts grow in proportion to the count.
+struct SettledPile {
+  explicit SettledPile(int count, ContactSolverKind solver) : simulator(real(1) / 60) {
+    simulator.setContactSolver(solver);
+    circles = scenes::addPile(simulator, count, 1, count / 10);
+    for (int step = 0; step < 200; ++step) advance();
+  }
+  void advance() {
+    scenes::push(circles, {0, -1});
+    simulator.advanceTime();
+  }
+  Simulator simulator;
+  std::vector<PhysicalObject*> circles;
+};
+
+void pileStep(benchmark::State& state, ContactSolverKind solver) {
+  SettledPile pile(static_cast<int>(state.range(0)), solver);
+  for (auto _ : state) pile.advance();
+  state.counters["contacts"] = static_cast<double>(pile.simulator.contacts.size());
+  state.counters["bodies"] = static_cast<double>(state.range(0));
+  state.counters["us_per_body"] = benchmark::Counter(
+      static_cast<double>(state.iterations()) * static_cast<double>(state.range(0)),
+      benchmark::Counter::kIsRate | benchmark::Counter::kInvert, benchmark::Counter::kIs1000);
+}
+
+void BM_PileStepGaussSeidel(benchmark::State& state) {
+  pileStep(state, ContactSolverKind::GaussSeidel);
+}
+void BM_PileStepBaraff(benchmark::State& state) { pileStep(state, ContactSolverKind::Baraff); }
+BENCHMARK(BM_PileStepGaussSeidel)->Arg(1000)->Arg(4000)->Arg(16000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PileStepBaraff)->Arg(1000)->Arg(4000)->Arg(16000)->Unit(benchmark::kMillisecond);
+
+void BM_DetectContacts(benchmark::State& state) {
+  SettledPile pile(static_cast<int>(state.range(0)), ContactSolverKind::GaussSeidel);
+  for (auto _ : state) {
+    pile.simulator.eraseContacts();
+    pile.simulator.detectContacts();
+  }
+  state.counters["contacts"] = static_cast<double>(pile.simulator.contacts.size());
+}
+BENCHMARK(BM_DetectContacts)->Arg(1000)->Arg(4000)->Arg(16000)->Unit(benchmark::kMicrosecond);
+
+void BM_Arena(benchmark::State& state) {
+  Simulator simulator(real(0.01));
+  scenes::addWalls(simulator, 10, 10);
+  const auto circles = scenes::addRandomCircles(simulator, 22, real(0.2), 10, 1);
+  const std::vector<PhysicalObject*> pushed(circles.begin(), circles.begin() + 2);
+  for (auto _ : state) {
+    scenes::push(pushed, {1, 0});
+    simulator.advanceTime();
+  }
+}
+BENCHMARK(BM_Arena);
+
+}  // namespace
+}  // namespace thyrix
