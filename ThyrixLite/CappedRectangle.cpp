@@ -34,6 +34,10 @@ Vector2 CappedRectangle::endPoint(int end) const {
   return end == 0 ? r - axis : r + axis;
 }
 
+void CappedRectangle::setTactileSensors(int perSide, int perCap, real saturation) {
+  tactile_ = TactileSensors::cappedRectangle(perSide, perCap, saturation);
+}
+
 void CappedRectangle::draw(GUI& gui) const {
   gui.drawCapsule(endPoint(0), endPoint(1), radius(), color, outlineColor);
 }

@@ -21,6 +21,11 @@ class CappedRectangle : public Primitive {
   /// World position of end-cap centre 0 (`-l` along the axis) or 1 (`+l`).
   [[nodiscard]] Vector2 endPoint(int end) const;
 
+  /// Puts @p perSide touch sensors on each straight side and @p perCap on each end cap,
+  /// numbered counter-clockwise from the lower-left corner (see TactileSensors); a sensor
+  /// saturates at a summed contact force of @p saturation. @throws InvalidArgument.
+  void setTactileSensors(int perSide, int perCap, real saturation);
+
   void draw(GUI& gui) const override;
   [[nodiscard]] std::string typeName() const override { return "CappedRectangle"; }
 };

@@ -18,6 +18,10 @@ Circle::Circle(real radius, real mass)
     : Primitive(ShapeType::Circle, checkedRadius(radius), 0, checkedMass(mass),
                 mass * radius * radius / 2) {}
 
+void Circle::setTactileSensors(int count, real startAngle, real saturation) {
+  tactile_ = TactileSensors::circle(count, startAngle, saturation);
+}
+
 void Circle::draw(GUI& gui) const { gui.drawCircle(r, radius(), alpha, color, outlineColor); }
 
 }  // namespace thyrix

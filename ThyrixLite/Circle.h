@@ -12,6 +12,11 @@ class Circle : public Primitive {
   /// @throws InvalidArgument naming "Circle.radius" or "Circle.mass" unless positive and finite
   Circle(real radius, real mass);
 
+  /// Puts @p count touch sensors around the circle, sensor 0 starting at body-frame angle
+  /// @p startAngle and each covering `2 pi / count` counter-clockwise; a sensor saturates at a
+  /// summed contact force of @p saturation. @throws InvalidArgument naming the field.
+  void setTactileSensors(int count, real startAngle, real saturation);
+
   void draw(GUI& gui) const override;
   [[nodiscard]] std::string typeName() const override { return "Circle"; }
 };

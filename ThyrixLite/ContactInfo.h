@@ -16,8 +16,8 @@ class Primitive;
 struct ContactInfo {
   std::uint32_t index = 0;                    ///< position of the pair in Simulator::contacts
   PhysicalObject* other = nullptr;            ///< the other object (its owner body for a part)
-  const Primitive* primitive = nullptr;       ///< this object's primitive that is touched
-  const Primitive* otherPrimitive = nullptr;  ///< the other object's primitive
+  Primitive* primitive = nullptr;        ///< this object's primitive that is touched
+  Primitive* otherPrimitive = nullptr;   ///< the other object's primitive
   Vector2 point;                              ///< contact point, world coordinates
   Vector2 normal;  ///< unit direction of the contact force on this object
   real depth = 0;  ///< overlap (positive) or gap (negative, a speculative contact)

@@ -19,8 +19,8 @@ class Primitive;
 struct GlobalContactInfo {
   PhysicalObject* objectA = nullptr;      ///< body A (the owner of primitiveA)
   PhysicalObject* objectB = nullptr;      ///< body B
-  const Primitive* primitiveA = nullptr;  ///< the primitive of A that is touched
-  const Primitive* primitiveB = nullptr;  ///< the primitive of B that is touched
+  Primitive* primitiveA = nullptr;    ///< the primitive of A that is touched
+  Primitive* primitiveB = nullptr;    ///< the primitive of B that is touched
   std::uint32_t bodyA = 0;                ///< index of objectA in Simulator::objects
   std::uint32_t bodyB = 0;                ///< index of objectB in Simulator::objects
   std::uint32_t shapeA = 0;               ///< index of primitiveA among the simulator's primitives

@@ -17,6 +17,10 @@ void PhysicalObject::computeDerivativesWithoutContacts() {
 
 void PhysicalObject::control() {}
 
+void PhysicalObject::updateSensors(const World& /*world*/) {}
+
+void PhysicalObject::onRegistered(Simulator& /*simulator*/) noexcept {}
+
 void PhysicalObject::integrate(real dt) {
   if (fixed) return;
   r += v * dt;

@@ -7,6 +7,7 @@
 #include <ThyrixLite/ThyrixParameters.h>
 #include <ThyrixLite/Vector2.h>
 
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -14,6 +15,8 @@
 namespace thyrix {
 
 class Primitive;
+class Simulator;
+class World;
 
 /// A rigid body of the plane with quasistatic (Aristotelian) dynamics: its velocity is the
 /// force on it divided by its mass, `v = F / m` and `omega = torque / I`, so it stops the
@@ -45,6 +48,9 @@ class PhysicalObject : public GraphicalObject {
   /// until the next step starts.
   std::span<ContactInfo> contacts;
   bool fixed = false;  ///< a fixed object never moves: it has infinite mass
+  /// Objects sharing a non-zero group never touch each other (the bodies of one agent, say);
+  /// group 0 touches everything.
+  std::uint32_t collisionGroup = 0;
 
   /// Phase 5 of a step: velocities from the accumulated external force and torque alone,
   /// `v = F / m`, `omega = torque / I`; the accumulators are then reset to zero.
@@ -59,6 +65,10 @@ class PhysicalObject : public GraphicalObject {
 
   /// Checks the state before registration; throws InvalidArgument naming the field.
   virtual void validate() const;
+
+  /// Phase 2 of a step, after contact detection: updates this object's visual sensors from
+  /// the world. The default does nothing.
+  virtual void updateSensors(const World& world);
 
   /// The class name used in error messages, e.g. "Circle".
   [[nodiscard]] virtual std::string typeName() const { return "PhysicalObject"; }
@@ -92,8 +102,24 @@ class PhysicalObject : public GraphicalObject {
   /// Makes @p primitive part of this body's collision geometry.
   void addPrimitive(Primitive& primitive) { primitives_.push_back(&primitive); }
 
+  /// Hands @p body to this object until registration, when the world registers it right
+  /// after this object and takes ownership (how an agent brings its several bodies along).
+  template <class T>
+  T& addSubBody(std::unique_ptr<T> body) {
+    T& added = *body;
+    subBodies_.push_back(std::move(body));
+    return added;
+  }
+
+  /// Called once the object is registered with @p simulator (agents that need the time step
+  /// or the world keep a reference). Must not throw.
+  virtual void onRegistered(Simulator& simulator) noexcept;
+
  private:
+  friend class World;
+  friend class Simulator;
   std::vector<Primitive*> primitives_;
+  std::vector<std::unique_ptr<PhysicalObject>> subBodies_;  // handed to the world on registration
 };
 
 }  // namespace thyrix

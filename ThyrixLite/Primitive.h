@@ -3,6 +3,7 @@
 /// @brief The base of the collision shapes: Circle, CappedRectangle and Border.
 
 #include <ThyrixLite/PhysicalObject.h>
+#include <ThyrixLite/TactileSensors.h>
 
 #include <cstdint>
 
@@ -40,6 +41,13 @@ class Primitive : public PhysicalObject {
     localPosition_ = localPosition;
     localAngle_ = localAngle;
   }
+  /// The tactile sensors of this primitive (none unless set up; see Circle and CappedRectangle).
+  [[nodiscard]] const TactileSensors& tactileSensors() const { return tactile_; }
+  /// Shortcut for `tactileSensors().activations()`.
+  [[nodiscard]] std::span<const real> tactileActivations() const { return tactile_.activations(); }
+  /// Adds a contact force of magnitude @p force at @p worldPoint to the sensor under it.
+  void touch(Vector2 worldPoint, real force);
+
   /// Moves `r` and `alpha` to follow the owner (no-op for a standalone primitive).
   void followOwner() {
     if (owner_ == this) return;
@@ -56,7 +64,11 @@ class Primitive : public PhysicalObject {
     addPrimitive(*this);
   }
 
+  TactileSensors tactile_;  ///< set up by the shape classes
+
  private:
+  friend class Simulator;  // clears and finishes the sensors around each solve
+
   ShapeType shapeType_;
   real radius_;
   real halfLength_;

@@ -18,17 +18,19 @@ void Simulator::setTimestep(real timestep) {
   timestep_ = timestep;
 }
 
-void Simulator::prepareRegistration(PhysicalObject& object, std::size_t /*index*/) {
+void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
   // Reserve everything registration will append to, so completing it cannot fail.
-  const std::size_t added = object.primitives().size();
-  shapes_.reserve(shapes_.size() + added);
-  geometry_.reserve(shapes_.size() + added);
-  borderShapes_.reserve(borderShapes_.size() + added);
-  gridShapes_.reserve(gridShapes_.size() + added);
-  gridBoxes_.reserve(gridShapes_.size() + added);
-  bodies_.reserve(objects.size() + 1);
-  movable_.reserve(objects.size() + 1);
-  objectContactStart_.reserve(objects.size() + 2);
+  std::size_t shapes = 0;
+  for (const PhysicalObject* object : added) shapes += object->primitives().size();
+  shapes_.reserve(shapes_.size() + shapes);
+  geometry_.reserve(shapes_.size() + shapes);
+  borderShapes_.reserve(borderShapes_.size() + shapes);
+  sensingPrimitives_.reserve(shapes_.size() + shapes);
+  gridShapes_.reserve(gridShapes_.size() + shapes);
+  gridBoxes_.reserve(gridShapes_.size() + shapes);
+  bodies_.reserve(objects.size() + added.size());
+  movable_.reserve(objects.size() + added.size());
+  objectContactStart_.reserve(objects.size() + added.size() + 1);
 }
 
 void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) noexcept {
@@ -45,6 +47,7 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
   }
   bodies_.push_back({});
   movable_.push_back(0);
+  object.onRegistered(*this);
 }
 
 void Simulator::reserveContacts(std::size_t count) {
@@ -82,9 +85,11 @@ void Simulator::updateGeometry() {
     object.boxMin = {realMax, realMax};
     object.boxMax = {-realMax, -realMax};
   }
+  sensingPrimitives_.clear();
   for (std::size_t s = 0; s < shapes_.size(); ++s) {
     Primitive& primitive = *shapes_[s].primitive;
     primitive.followOwner();
+    if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
     ShapeGeometry& g = geometry_[s];
     g.radius = primitive.radius();
     g.margin = fraction * g.radius;
@@ -136,6 +141,7 @@ void Simulator::detectContacts() {
   for (const std::uint32_t border : borderShapes_)
     for (const std::uint32_t shape : gridShapes_) addContacts(border, shape);
   statistics_.contacts = contacts.size();
+  for (PhysicalObject& object : objects) object.updateSensors(*this);
 }
 
 void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
@@ -146,6 +152,7 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
   PhysicalObject& bodyA = objects[a.body];
   PhysicalObject& bodyB = objects[b.body];
   if (bodyA.fixed && bodyB.fixed) return;
+  if (bodyA.collisionGroup != 0 && bodyA.collisionGroup == bodyB.collisionGroup) return;
   const ShapeGeometry& ga = geometry_[shapeA];
   const ShapeGeometry& gb = geometry_[shapeB];
   const real margin = a.type == ShapeType::HalfPlane ? gb.margin : std::min(ga.margin, gb.margin);
@@ -260,6 +267,7 @@ void Simulator::solveContacts() {
   statistics_.gaussSeidelSweeps = statistics_.baraffPivots = statistics_.baraffFallbacks = 0;
   if (contacts.empty()) {
     lastForces_.reset(0);
+    updateTactileSensors();
     return;
   }
 
@@ -302,6 +310,17 @@ void Simulator::solveContacts() {
       lastForces_.insert(ContactForceCache::key(c.shapeA, c.shapeB, c.feature), c.force);
   }
   for (ContactInfo& info : objectContacts_) info.force = rows_[info.index].force;
+  updateTactileSensors();
+}
+
+void Simulator::updateTactileSensors() {
+  for (Primitive* primitive : sensingPrimitives_) primitive->tactile_.clear();
+  for (const GlobalContactInfo& c : contacts.items_) {
+    if (c.force <= 0) continue;
+    if (c.primitiveA->tactile_.enabled()) c.primitiveA->touch(c.point, c.force);
+    if (c.primitiveB->tactile_.enabled()) c.primitiveB->touch(c.point, c.force);
+  }
+  for (Primitive* primitive : sensingPrimitives_) primitive->tactile_.finish();
 }
 
 void Simulator::solveIsland(std::span<const std::uint32_t> island) {

@@ -59,7 +59,8 @@ class Simulator : public World {
   void indexContacts();
   /// Phase 4: while dragging, adds the force that pulls the grabbed point to the mouse.
   void applyMouseForce();
-  /// Phase 6: contact forces (the chosen solver, island by island), then final velocities.
+  /// Phase 6: contact forces (the chosen solver, island by island), then final velocities;
+  /// the tactile sensors then read the forces.
   void solveContacts();
 
   /// Sizes the per-step buffers for up to @p count contacts, so that steps with no more
@@ -104,7 +105,7 @@ class Simulator : public World {
   real dragMaxStepFraction = real(0.2);
 
  protected:
-  void prepareRegistration(PhysicalObject& object, std::size_t index) override;
+  void prepareRegistration(std::span<PhysicalObject* const> added) override;
   void completeRegistration(PhysicalObject& object, std::size_t index) noexcept override;
 
  private:
@@ -126,6 +127,7 @@ class Simulator : public World {
   void updateGeometry();
   void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void solveIsland(std::span<const std::uint32_t> island);
+  void updateTactileSensors();
 
   real timestep_;
   std::uint64_t stepCount_ = 0;
@@ -138,6 +140,7 @@ class Simulator : public World {
   std::vector<ShapeGeometry> geometry_;
   std::vector<std::uint32_t> borderShapes_;  // half-planes: tested against every shape
   std::vector<std::uint32_t> gridShapes_;    // the others, in the broad phase
+  std::vector<Primitive*> sensingPrimitives_;  // primitives with tactile sensors, this step
   std::vector<BoundingBox> gridBoxes_;
   std::vector<BoxPair> pairs_;
   BroadPhase broadPhase_;

@@ -8,23 +8,40 @@ void World::draw(GUI& gui) const {
   for (const PhysicalObject& object : objects) object.draw(gui);
 }
 
-void World::prepareRegistration(PhysicalObject& /*object*/, std::size_t /*index*/) {}
+void World::prepareRegistration(std::span<PhysicalObject* const> /*added*/) {}
 
 void World::completeRegistration(PhysicalObject& /*object*/, std::size_t /*index*/) noexcept {}
 
-void World::adopt(std::unique_ptr<PhysicalObject> object) {
-  if (!object) throw InvalidArgument("World.registerObject.object", "must not be null");
-  object->validate();
-  for (const Primitive* part : object->primitives()) {
-    if (&part->owner() != object.get())
-      throw InvalidArgument(object->typeName() + ".owner",
+namespace {
+void validateForRegistration(const PhysicalObject& object) {
+  object.validate();
+  for (const Primitive* part : object.primitives()) {
+    if (&part->owner() != &object)
+      throw InvalidArgument(object.typeName() + ".owner",
                             "is a part of another body: register the body, not its part");
   }
+}
+}  // namespace
+
+void World::adopt(std::unique_ptr<PhysicalObject> object) {
+  if (!object) throw InvalidArgument("World.registerObject.object", "must not be null");
+  // Everything is checked and prepared before anything is added: all or nothing.
+  validateForRegistration(*object);
+  for (const auto& body : object->subBodies_) validateForRegistration(*body);
   const std::size_t index = objects.items_.size();
-  objects.items_.reserve(index + 1);  // the only allocation that could fail after preparing
-  prepareRegistration(*object, index);
+  std::vector<PhysicalObject*> added{object.get()};
+  for (const auto& body : object->subBodies_) added.push_back(body.get());
+  objects.items_.reserve(index + added.size());
+  prepareRegistration(added);
+
+  // The object comes first, so its phase hooks run before its sub-bodies' in every step.
+  std::vector<std::unique_ptr<PhysicalObject>> subBodies = std::move(object->subBodies_);
   objects.items_.push_back(std::move(object));
   completeRegistration(*objects.items_.back(), index);
+  for (auto& body : subBodies) {
+    objects.items_.push_back(std::move(body));
+    completeRegistration(*objects.items_.back(), objects.items_.size() - 1);
+  }
 }
 
 }  // namespace thyrix

@@ -7,6 +7,7 @@
 
 #include <concepts>
 #include <memory>
+#include <span>
 
 namespace thyrix {
 
@@ -26,7 +27,8 @@ class World {
   /// Takes ownership of @p object and returns it, typed as given.
   ///
   /// The object is validated first (sizes, masses, finite position and angle); on failure an
-  /// InvalidArgument names the field and the world is left unchanged.
+  /// InvalidArgument names the field and the world is left unchanged. An agent's sub-bodies
+  /// (PhysicalObject::addSubBody) are registered right after it, all or nothing.
   template <std::derived_from<PhysicalObject> T>
   T& registerObject(std::unique_ptr<T> object) {
     T* added = object.get();
@@ -38,9 +40,10 @@ class World {
   virtual void draw(GUI& gui) const;
 
  protected:
-  /// Called for a validated object before it joins `objects`, with its future index. May
-  /// throw (the world is then unchanged); must leave no trace when it throws.
-  virtual void prepareRegistration(PhysicalObject& object, std::size_t index);
+  /// Called for validated objects before they join `objects` (an object and its sub-bodies),
+  /// so that completing their registration cannot fail. May throw (the world is then
+  /// unchanged); must leave no observable trace when it throws.
+  virtual void prepareRegistration(std::span<PhysicalObject* const> added);
   /// Called once the object has joined `objects`; must not throw.
   virtual void completeRegistration(PhysicalObject& object, std::size_t index) noexcept;
 
