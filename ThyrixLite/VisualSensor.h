@@ -1,0 +1,99 @@
+#pragma once
+/// @file VisualSensor.h
+/// @brief An eye: a row of pixels rigidly attached to a body, each measuring how much of its
+/// view angle the objects of the world cover.
+
+#include <ThyrixLite/AngularCoverage.h>
+#include <ThyrixLite/ObjectList.h>
+#include <ThyrixLite/PhysicalObject.h>
+#include <ThyrixLite/ThyrixParameters.h>
+#include <ThyrixLite/Vector2.h>
+
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace thyrix {
+
+/// A visual sensor (DESIGN.md section 4): an eye at a point of a body, looking along a
+/// direction fixed in the body, with `pixelCount` pixels of `pixelAngle` radians side by side,
+/// centred on the view direction. With `d` the world view direction, `n` pixels of width `w`,
+/// pixel i sees the directions `[d - n w / 2 + i w, d - n w / 2 + (i + 1) w]`: pixel 0 is the
+/// clockwise-most (rightmost) and the indices increase counter-clockwise.
+///
+/// A pixel's activation is the fraction of its angle covered by the circles and capsules
+/// (CappedRectangle) of the world, in [0, 1]; overlapping objects count once. Borders are not
+/// seen, nor the primitives of the sensor's own body. The range is infinite. An object that
+/// contains or touches the eye covers every pixel.
+///
+/// The sensor reads the primitives' world pose (`r`, `alpha`) as it is when update() runs; for
+/// the parts of a composed body the simulator keeps it current. update() allocates nothing once
+/// it has run on a world of the same size. The sensor refers to its body, which must outlive it.
+class VisualSensor {
+ public:
+  /// @param body the body the eye is attached to (it is not seen)
+  /// @param localPosition the eye, in the body frame (m)
+  /// @param localDirection the view direction, an angle in the body frame (rad)
+  /// @param pixelCount number of pixels, at least 1
+  /// @param pixelAngle angle each pixel covers (rad); all together at most 2 pi (rounding of
+  ///        `2 pi / pixelCount` is accepted)
+  /// @throws InvalidArgument naming "VisualSensor.pixelCount" (below 1),
+  ///         "VisualSensor.pixelAngle" (not positive and finite, or pixels spanning more than
+  ///         2 pi), "VisualSensor.localPosition" or "VisualSensor.localDirection" (not finite)
+  VisualSensor(const PhysicalObject& body, Vector2 localPosition, real localDirection,
+               int pixelCount, real pixelAngle);
+
+  /// Recomputes every pixel's activation from the primitives of @p objects, seen from the
+  /// body's current pose. Objects out of the field of view are culled without trigonometry;
+  /// the others' angular extents are clipped to the field of view, merged into their union, and
+  /// the pixels integrated over it in one sweep.
+  void update(const ObjectList& objects);
+
+  /// Activation of each pixel, in [0, 1], as of the last update() (zero before the first).
+  [[nodiscard]] std::span<const real> activations() const { return activations_; }
+  /// Number of pixels.
+  [[nodiscard]] int pixelCount() const { return pixelCount_; }
+  /// Angle each pixel covers (rad).
+  [[nodiscard]] real pixelAngle() const { return pixelAngle_; }
+  /// Angle all the pixels cover together, `pixelCount * pixelAngle` (rad).
+  [[nodiscard]] real fieldOfView() const { return 2 * halfField_; }
+  /// The eye's position in the body frame (m).
+  [[nodiscard]] Vector2 localPosition() const { return localPosition_; }
+  /// The view direction in the body frame (rad).
+  [[nodiscard]] real localDirection() const { return localDirection_; }
+  /// The body the eye is attached to.
+  [[nodiscard]] const PhysicalObject& body() const { return *body_; }
+
+  /// The eye's position in world coordinates, from the body's current pose (m).
+  [[nodiscard]] Vector2 eyePosition() const { return body_->toWorld(localPosition_); }
+  /// The view direction in world coordinates, from the body's current pose, in (-pi, pi] (rad).
+  [[nodiscard]] real viewDirection() const;
+  /// The world directions (rad) bounding pixel @p i, clockwise-most first, from the body's
+  /// current pose: `viewDirection() - n w / 2 + i w` and `+ (i + 1) w` (not wrapped, so the
+  /// second is always the larger), for drawing the pixels' rays.
+  /// @throws InvalidArgument naming "VisualSensor.pixelBounds.i" unless 0 <= i < pixelCount()
+  [[nodiscard]] std::pair<real, real> pixelBounds(int i) const;
+
+ private:
+  /// True if a disk at @p offset from the eye, of @p radius, lies entirely outside the field of
+  /// view (conservative: a false answer does not mean the disk is seen).
+  [[nodiscard]] bool outside(Vector2 offset, real radius, Vector2 view, Vector2 rightEdge,
+                             Vector2 leftEdge) const;
+  /// As outside(), for the capsule of end-cap centres at @p offset0 and @p offset1 from the eye.
+  [[nodiscard]] bool outside(Vector2 offset0, Vector2 offset1, real radius, Vector2 view,
+                             Vector2 rightEdge, Vector2 leftEdge) const;
+
+  const PhysicalObject* body_;
+  Vector2 localPosition_;
+  real localDirection_;
+  Vector2 localView_;  // unit vector of localDirection_
+  int pixelCount_;
+  real pixelAngle_;
+  real halfField_;  // half the field of view
+  real cosHalfField_;
+  real sinHalfField_;
+  std::vector<real> activations_;
+  AngularCoverage coverage_;
+};
+
+}  // namespace thyrix

@@ -1,0 +1,278 @@
+#pragma once
+/// @file ArticulatedBody.h
+/// @brief A floating base with a tree of links on revolute joints under quasistatic dynamics,
+/// solved in O(N) by the quasistatic articulated-body algorithm, with Kokkevis test forces for
+/// building contact and joint-limit constraint matrices.
+
+#include <ThyrixLite/SymmetricMatrix3.h>
+#include <ThyrixLite/ThyrixParameters.h>
+#include <ThyrixLite/Vector2.h>
+#include <ThyrixLite/Vector3.h>
+#include <ThyrixPro/ArticulatedLink.h>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace thyrix {
+
+/// A rigid base (mass m0, moment of inertia I0 about its centre of mass, pose x, y, theta) and
+/// a tree of ArticulatedLink on revolute joints, moving by the quasistatic law `D u = F`
+/// (DESIGN.md section 4): velocities, not accelerations, are proportional to forces.
+///
+/// **Bodies** are numbered like ArticulatedLink::parent: `-1` (ArticulatedLink::base) is the
+/// base and `0 .. linkCount() - 1` are the links. Arrays over all bodies hold the base first:
+/// body `b` is at slot `b + 1`.
+///
+/// **Frames and units.** Everything given or returned is in world coordinates unless stated.
+/// The base frame has its origin at the base's centre of mass and is turned by baseAngle().
+/// Link i's frame has its origin at its joint and its x axis along the link, turned by
+/// `q_i` from its parent's frame; angles are counter-clockwise (rad).
+///
+/// **Spatial vectors** are planar, ordered *(angular, x, y)* (see SpatialAlgebra.h):
+/// - a body velocity is `(omega, vx, vy)`: the angular velocity and the linear velocity of the
+///   body's *centre of mass*, world axes;
+/// - an external wrench is `(torque, fx, fy)`: the force in world axes and the torque about the
+///   body's *centre of mass* (a force f at a world point p gives the torque
+///   `cross(p - centerOfMass(b), f)`; spatialForceAt(f, p, centerOfMass(b)) builds it).
+///
+/// **Joint torques.** `tau_i > 0` turns link i counter-clockwise relative to its parent: it
+/// acts as `+tau_i` on link i and `-tau_i` on the parent, so it is the generalized force of
+/// `qdot_i`.
+///
+/// **The law solved.** With generalized velocities `u = (v_base, omega_base, qdot)` and the
+/// Jacobian J from u to every body's (centre-of-mass velocity, omega),
+/// `(J^T D J) u = J^T F + (0, 0, 0, tau)`, D = diag(m, m, I) per body. solve() computes u in
+/// O(N) by the articulated-body algorithm with velocities in place of accelerations and no
+/// velocity-product terms (Featherstone 2008, chapter 7: section 7.3 and Table 7.1, p. 132;
+/// ALGORITHMS.md section 2).
+///
+/// **Use.** Set the state (setBasePose(), setJointAngles()), then solve() for the velocities
+/// from torques and external wrenches. A contact solver then builds its constraint matrix K a
+/// column at a time with respond() (one TestForce per constraint) and velocityAlong(): the
+/// articulated inertias depend on the configuration only, so they are computed once and every
+/// test force costs one bias pass and one outward pass (Kokkevis 2004; ALGORITHMS.md section
+/// 3). Move the state with integrate().
+///
+/// All work arrays are sized at construction: solve(), respond() and the kinematics allocate
+/// nothing once the Output passed in has been sized (makeOutput()).
+class ArticulatedBody {
+ public:
+  /// The body index of the base.
+  static constexpr int base = ArticulatedLink::base;
+
+  /// A unit generalized force of one constraint: a unit force at a world point along a world
+  /// direction on one body (a contact), or a torque on one joint (a joint limit). It is also
+  /// the constraint's Jacobian row J_c: velocityAlong() reads `J_c u`, so respond() to test
+  /// force j read with velocityAlong() of constraint i is `K_ij = J_i (J^T D J)^-1 J_j^T`.
+  struct TestForce {
+    /// What the force is.
+    enum class Kind : std::uint8_t {
+      PointForce,  ///< `direction` applied at `point` on body `index` (-1 the base)
+      JointTorque  ///< `torque` on joint `index` (+ on the link, - on its parent)
+    };
+    Kind kind = Kind::PointForce;  ///< what the force is
+    int index = base;              ///< the body (PointForce) or the joint, i.e. link (JointTorque)
+    Vector2 point;                 ///< PointForce: world point of application (m)
+    Vector2 direction;             ///< PointForce: world force per unit magnitude (a unit normal)
+    real torque = 1;  ///< JointTorque: torque per unit magnitude: 1 (lower limit), -1 (upper)
+
+    /// A unit force along @p direction at the world point @p point on @p body (-1 the base).
+    static constexpr TestForce atPoint(int body, Vector2 point, Vector2 direction) {
+      return {Kind::PointForce, body, point, direction, 1};
+    }
+    /// A torque @p torque (1 by default) on joint @p joint.
+    static constexpr TestForce onJoint(int joint, real torque = 1) {
+      return {Kind::JointTorque, joint, {}, {}, torque};
+    }
+  };
+
+  /// The velocities computed by solve() and respond(); size it once with makeOutput().
+  struct Output {
+    /// Per body, base first (body b at slot b + 1): `(omega, vx, vy)`, the angular velocity and
+    /// the velocity of the centre of mass, world axes.
+    std::vector<Vector3> velocities;
+    /// Per joint: `qdot_i` (rad/s).
+    std::vector<real> jointRates;
+
+    /// An output for @p linkCount links, all zero.
+    explicit Output(int linkCount = 0) { resize(linkCount); }
+    /// Resizes for @p linkCount links; allocates only when growing past the capacity.
+    void resize(int linkCount);
+    /// Sets every velocity and rate to zero.
+    void setZero();
+    /// Adds @p scale times @p other (same size): responses add up, being linear in the forces.
+    void addScaled(const Output& other, real scale);
+
+    /// The spatial velocity `(omega, vx, vy)` of body @p b (-1 the base) at its centre of mass.
+    [[nodiscard]] const Vector3& velocity(int b) const { return velocities[b + 1]; }
+    /// The angular velocity of body @p b (rad/s).
+    [[nodiscard]] real angularVelocity(int b) const { return velocities[b + 1].x; }
+    /// The velocity of the centre of mass of body @p b (m/s).
+    [[nodiscard]] Vector2 linearVelocity(int b) const {
+      return {velocities[b + 1].y, velocities[b + 1].z};
+    }
+    /// The rate of joint @p i (rad/s).
+    [[nodiscard]] real jointRate(int i) const { return jointRates[i]; }
+  };
+
+  /// A base of quasistatic mass @p baseMass (N s/m) and moment of inertia @p baseInertia
+  /// (N m s) about its centre of mass, with @p links; the pose and joint angles start at zero.
+  /// @throws InvalidArgument naming "ArticulatedBody.baseMass" or ".baseInertia" unless
+  /// positive and finite, or the first bad field of a link (ArticulatedLink::validate())
+  ArticulatedBody(real baseMass, real baseInertia, std::vector<ArticulatedLink> links);
+
+  // --- description ---------------------------------------------------------------------------
+
+  /// The number of links N (joints).
+  [[nodiscard]] int linkCount() const { return static_cast<int>(links_.size()); }
+  /// The links, in index order.
+  [[nodiscard]] std::span<const ArticulatedLink> links() const { return links_; }
+  /// Link @p i.
+  [[nodiscard]] const ArticulatedLink& link(int i) const { return links_[i]; }
+  /// The parent of body @p b (-1 for a link on the base; the base has none and gives -2).
+  [[nodiscard]] int parent(int b) const { return b == base ? base - 1 : links_[b].parent; }
+  /// The quasistatic mass of body @p b (-1 the base).
+  [[nodiscard]] real mass(int b) const { return b == base ? baseMass_ : links_[b].mass; }
+  /// The moment of inertia of body @p b (-1 the base) about its centre of mass.
+  [[nodiscard]] real inertia(int b) const { return b == base ? baseInertia_ : links_[b].inertia; }
+
+  /// A fixed base never moves (infinite mass): only the joints do. Off by default.
+  [[nodiscard]] bool baseFixed() const { return baseFixed_; }
+  /// Fixes or frees the base; the cached articulated inertias stay valid (the base's own
+  /// articulated inertia is simply not used while it is fixed).
+  void setBaseFixed(bool fixed) { baseFixed_ = fixed; }
+
+  // --- state ---------------------------------------------------------------------------------
+
+  /// The world position of the base's centre of mass, the base frame's origin (m).
+  [[nodiscard]] Vector2 basePosition() const { return basePosition_; }
+  /// The world angle of the base frame (rad).
+  [[nodiscard]] real baseAngle() const { return baseAngle_; }
+  /// The joint angles q (rad), one per link.
+  [[nodiscard]] std::span<const real> jointAngles() const { return q_; }
+  /// The angle of joint @p i (rad).
+  [[nodiscard]] real jointAngle(int i) const { return q_[i]; }
+
+  // Every setter below recomputes the kinematics (O(N)), so the pose accessors are always
+  // current; the articulated inertias are recomputed lazily by the next solve() or respond().
+
+  /// Places the base's centre of mass at @p position, its frame turned by @p angle.
+  /// @throws InvalidArgument naming "ArticulatedBody.basePosition" or ".baseAngle" unless finite
+  void setBasePose(Vector2 position, real angle);
+  /// Sets the angle of joint @p i; O(N), so prefer setJointAngles() to set many.
+  /// @throws InvalidArgument naming "ArticulatedBody.q" unless @p i is a joint and @p q finite
+  void setJointAngle(int i, real q);
+  /// Sets all joint angles. @throws InvalidArgument naming "ArticulatedBody.q" unless there are
+  /// linkCount() of them, all finite; the state is then unchanged
+  void setJointAngles(std::span<const real> q);
+  /// Moves the state by @p out for @p dt (explicit Euler, like Integrator): the base's centre
+  /// of mass by its velocity, the base angle by its angular velocity (unless the base is
+  /// fixed), each `q_i` by `qdot_i`.
+  /// @throws InvalidArgument naming "ArticulatedBody.Output" when @p out is not sized for this
+  /// body
+  void integrate(const Output& out, real dt);
+
+  // --- kinematics ----------------------------------------------------------------------------
+
+  /// Computes every body's world pose and centre of mass from the state, root to leaves. The
+  /// constructor and every state setter call it, so the accessors below are always current.
+  void forwardKinematics();
+  /// The world origin of body @p b's frame: the base's centre of mass, or link b's joint (m).
+  [[nodiscard]] Vector2 origin(int b) const { return origin_[b + 1]; }
+  /// The world angle of body @p b's frame (rad).
+  [[nodiscard]] real angle(int b) const { return angle_[b + 1]; }
+  /// The world position of body @p b's centre of mass (m).
+  [[nodiscard]] Vector2 centerOfMass(int b) const { return origin_[b + 1] + comOffset_[b + 1]; }
+  /// The world position of the point @p local of body @p b's frame (m).
+  [[nodiscard]] Vector2 toWorld(int b, Vector2 local) const {
+    const Vector2 a = axis_[b + 1];
+    return origin_[b + 1] + Vector2{a.x * local.x - a.y * local.y, a.y * local.x + a.x * local.y};
+  }
+  /// The world position of link @p i's tip, `toWorld(i, link(i).tip())` (m).
+  [[nodiscard]] Vector2 tip(int i) const { return toWorld(i, links_[i].tip()); }
+
+  // --- quasistatic articulated-body algorithm ------------------------------------------------
+
+  /// The inward pass quantities that depend only on the configuration (Featherstone 2008,
+  /// section 7.3): each body's articulated inertia `D^A_i` about its frame origin in world
+  /// axes, `U_i = D^A_i S_i` and `d_i = S_i^T U_i`. Cached: solve() and respond() call it only
+  /// when the state has changed since.
+  void computeArticulatedInertias();
+
+  /// The velocities from joint torques and external wrenches, in O(N).
+  /// @param jointTorques `tau_i` per joint (N m), or empty for none
+  /// @param externalWrenches `(torque about the centre of mass, fx, fy)` per body, world axes,
+  ///        base first (body b at b + 1), linkCount() + 1 of them, or empty for none
+  /// @param out the velocities of every body and the joint rates; resized if needed
+  /// @throws InvalidArgument naming "ArticulatedBody.jointTorques" or ".externalWrenches" when
+  ///         a span is neither empty nor of the right size
+  void solve(std::span<const real> jointTorques, std::span<const Vector3> externalWrenches,
+             Output& out);
+
+  /// The velocities caused by one test force (Kokkevis): like solve() with that force alone,
+  /// but reusing the cached articulated inertias, so it costs one bias pass and one outward
+  /// pass, O(N). A column of the constraint matrix K is velocityAlong() of each constraint.
+  /// @throws InvalidArgument naming "ArticulatedBody.TestForce.index" when out of range
+  void respond(const TestForce& force, Output& out);
+  /// The velocities caused by @p forces together, force k scaled by `magnitudes[k]` (all 1 when
+  /// @p magnitudes is empty): by linearity, `u0 + respond(forces, f)` gives the velocities
+  /// under contact forces f. Same cost as one respond().
+  /// @throws InvalidArgument naming "ArticulatedBody.TestForce.index" when out of range, or
+  ///         "ArticulatedBody.magnitudes" when neither empty nor one per force
+  void respond(std::span<const TestForce> forces, std::span<const real> magnitudes, Output& out);
+
+  /// The world velocity of the material point of body @p b (-1 the base) at the world point
+  /// @p point, in @p out: `v_com + omega x (point - centerOfMass(b))` (m/s).
+  [[nodiscard]] Vector2 pointVelocity(const Output& out, int b, Vector2 point) const;
+  /// The velocity conjugate to @p constraint, `J_c u`: for a PointForce the velocity of its
+  /// point on its body along its direction; for a JointTorque `torque * qdot_index`.
+  [[nodiscard]] real velocityAlong(const Output& out, const TestForce& constraint) const;
+  /// The rate of joint @p i in @p out (rad/s).
+  [[nodiscard]] static real jointRate(const Output& out, int i) { return out.jointRates[i]; }
+  /// An Output sized for this body, all zero.
+  [[nodiscard]] Output makeOutput() const { return Output(linkCount()); }
+
+  /// The cached articulated inertia `D^A` of body @p b (-1 the base) about its frame origin,
+  /// world axes, ordered (angular, x, y); valid after computeArticulatedInertias().
+  [[nodiscard]] const SymmetricMatrix3& articulatedInertia(int b) const {
+    return articulatedInertia_[b + 1];
+  }
+
+ private:
+  void updateIfStale();
+  void checkTestForce(const TestForce& force) const;
+  void depositTestForce(const TestForce& force, real magnitude);
+  /// The bias pass (leaves to root) from bias_ and jointTorque_, then the outward pass (root to
+  /// leaves), writing out. bias_ holds `-f_ext` about each frame origin on entry.
+  void biasAndOutwardPasses(Output& out);
+
+  real baseMass_;
+  real baseInertia_;
+  bool baseFixed_ = false;
+  std::vector<ArticulatedLink> links_;
+
+  Vector2 basePosition_;
+  real baseAngle_ = 0;
+  std::vector<real> q_;  ///< joint angles
+
+  bool inertiasStale_ = true;  ///< the state changed since computeArticulatedInertias()
+
+  // Per body, slot b + 1 (base first); world axes.
+  std::vector<Vector2> origin_;     ///< frame origin: base centre of mass or joint
+  std::vector<real> angle_;         ///< frame angle
+  std::vector<Vector2> axis_;       ///< (cos, sin) of the frame angle: the frame's x axis
+  std::vector<Vector2> comOffset_;  ///< centre of mass minus frame origin
+  std::vector<SymmetricMatrix3> articulatedInertia_;  ///< D^A about the frame origin
+  std::vector<Vector3> bias_;                         ///< p^A about the frame origin
+  std::vector<Vector3> originVelocity_;               ///< spatial velocity at the frame origin
+
+  // Per link (joint) i.
+  std::vector<Vector2> shift_;  ///< origin minus the parent's origin: X_i is a pure translation
+  std::vector<Vector3> jointForceDirection_;  ///< U_i = D^A_i S_i
+  std::vector<real> inverseJointInertia_;     ///< 1 / d_i, d_i = S_i^T D^A_i S_i
+  std::vector<real> jointTorque_;             ///< tau_i for the current pass
+  std::vector<real> jointBias_;               ///< u_i = tau_i - S_i^T p^A_i
+};
+
+}  // namespace thyrix

@@ -1,0 +1,166 @@
+// Planar spatial algebra (ThyrixPro/SpatialAlgebra.h): every transform checked against its
+// definition (the velocity of a moving point, the moment of a force about a new point), the
+// matrix forms against each other (X* = X^-T), power invariance, and the spatial inertia
+// against the parallel-axis theorem.
+
+#include "TestTolerances.h"
+
+#include <ThyrixLite/Matrix3.h>
+#include <ThyrixLite/SymmetricMatrix3.h>
+#include <ThyrixPro/SpatialAlgebra.h>
+#include <Tools/MTRandom.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace thyrix {
+namespace {
+
+using test::tight;
+
+real draw(MTRandom& random, double low, double high) {
+  return static_cast<real>(random.uniform(low, high));
+}
+
+Vector3 randomVector(MTRandom& random) {
+  return {draw(random, -2, 2), draw(random, -2, 2), draw(random, -2, 2)};
+}
+
+void expectNear(const Vector3& actual, const Vector3& expected, real tolerance) {
+  EXPECT_NEAR(actual.x, expected.x, tolerance);
+  EXPECT_NEAR(actual.y, expected.y, tolerance);
+  EXPECT_NEAR(actual.z, expected.z, tolerance);
+}
+
+void expectNear(const Matrix3& actual, const Matrix3& expected, real tolerance) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      EXPECT_NEAR(actual(i, j), expected(i, j), tolerance) << "entry (" << i << ", " << j << ")";
+}
+
+// Tolerance for a few operations on values of order 10.
+const real kTol = 20 * tight;
+
+TEST(SpatialAlgebraTest, ComponentOrderIsAngularThenLinear) {
+  const Vector3 m = motionVector(3, {4, 5});
+  EXPECT_EQ(m, (Vector3{3, 4, 5}));
+  EXPECT_EQ(angularPart(m), 3);
+  EXPECT_EQ(linearPart(m), (Vector2{4, 5}));
+  EXPECT_EQ(forceVector(-1, {2, 7}), (Vector3{-1, 2, 7}));
+}
+
+TEST(SpatialAlgebraTest, SpatialForceAtAPointHasTheMomentAboutTheOrigin) {
+  // A force (0, 2) at (3, 1) about (1, 1): lever (2, 0), moment 2 * 2 - 0 * 0 = 4.
+  EXPECT_EQ(spatialForceAt({0, 2}, {3, 1}, {1, 1}), (Vector3{4, 0, 2}));
+}
+
+TEST(SpatialAlgebraTest, MotionTransformIsTheVelocityOfTheNewOriginInTheNewAxes) {
+  MTRandom random(11);
+  for (int trial = 0; trial < 20; ++trial) {
+    const real theta = draw(random, -4, 4);
+    const Vector2 r{draw(random, -3, 3), draw(random, -3, 3)};
+    const PlanarTransform x = PlanarTransform::fromAngleAndOrigin(theta, r);
+    const Vector3 m = randomVector(random);
+    // By definition: the body point at B's origin moves at v_A + omega x r (A axes); B's axes
+    // are turned by theta, so its coordinates there are that vector turned by -theta.
+    const Vector2 atB = (linearPart(m) + cross(angularPart(m), r)).rotated(-theta);
+    expectNear(x.applyToMotion(m), motionVector(angularPart(m), atB), kTol);
+    expectNear(x.motionMatrix() * m, x.applyToMotion(m), kTol);
+    expectNear(x.inverseApplyToMotion(x.applyToMotion(m)), m, kTol);
+  }
+}
+
+TEST(SpatialAlgebraTest, MotionMatrixIsFeatherstonesPlanarTransform) {
+  // X = [1 0 0; s r_x - c r_y, c, s; c r_x + s r_y, -s, c] for theta = pi / 2, r = (2, 3):
+  // c = 0, s = 1: X = [1 0 0; 2 0 1; 3 -1 0].
+  const PlanarTransform x = PlanarTransform::fromAngleAndOrigin(std::acos(real(-1)) / 2, {2, 3});
+  Matrix3 expected;
+  expected.m = {{{1, 0, 0}, {2, 0, 1}, {3, -1, 0}}};
+  expectNear(x.motionMatrix(), expected, tight * 10);
+}
+
+TEST(SpatialAlgebraTest, ForceTransformIsTheDualAndKeepsPower) {
+  MTRandom random(12);
+  for (int trial = 0; trial < 20; ++trial) {
+    const real theta = draw(random, -4, 4);
+    const Vector2 r{draw(random, -3, 3), draw(random, -3, 3)};
+    const PlanarTransform x = PlanarTransform::fromAngleAndOrigin(theta, r);
+    const Vector3 f = randomVector(random);
+    const Vector3 m = randomVector(random);
+    expectNear(x.forceMatrix(), x.motionMatrix().inverse().transposed(), kTol);
+    expectNear(x.forceMatrix() * f, x.applyToForce(f), kTol);
+    // By definition: the moment about B's origin is n - r x f; the force turns by -theta.
+    const Vector2 force = linearPart(f);
+    expectNear(x.applyToForce(f),
+               forceVector(angularPart(f) - cross(r, force), force.rotated(-theta)), kTol);
+    expectNear(x.transposeApplyToForce(x.applyToForce(f)), f, kTol);
+    expectNear(x.motionMatrix().transposed() * f, x.transposeApplyToForce(f), kTol);
+    // Power is frame-independent: (X* f) . (X m) = f . m.
+    EXPECT_NEAR(x.applyToForce(f).dot(x.applyToMotion(m)), f.dot(m), kTol);
+  }
+}
+
+TEST(SpatialAlgebraTest, CongruenceIsTheMatrixProduct) {
+  MTRandom random(13);
+  for (int trial = 0; trial < 20; ++trial) {
+    const PlanarTransform x = PlanarTransform::fromAngleAndOrigin(
+        draw(random, -4, 4), {draw(random, -3, 3), draw(random, -3, 3)});
+    const SymmetricMatrix3 d{draw(random, 1, 3), draw(random, -1, 1), draw(random, -1, 1),
+                             draw(random, 1, 3), draw(random, -1, 1), draw(random, 1, 3)};
+    const Matrix3 expected = x.motionMatrix().transposed() * d.toMatrix() * x.motionMatrix();
+    expectNear(x.transposeCongruence(d).toMatrix(), expected, 5 * kTol);
+  }
+}
+
+TEST(SpatialAlgebraTest, TranslationsMatchThePlanarTransform) {
+  MTRandom random(14);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Vector2 r{draw(random, -3, 3), draw(random, -3, 3)};
+    const PlanarTransform x = PlanarTransform::translation(r);
+    const Vector3 v = randomVector(random);
+    expectNear(translateMotion(v, r), x.applyToMotion(v), kTol);
+    expectNear(translateForceBack(v, r), x.transposeApplyToForce(v), kTol);
+    const SymmetricMatrix3 d{draw(random, 1, 3), draw(random, -1, 1), draw(random, -1, 1),
+                             draw(random, 1, 3), draw(random, -1, 1), draw(random, 1, 3)};
+    expectNear(translateInertiaBack(d, r).toMatrix(), x.transposeCongruence(d).toMatrix(),
+               5 * kTol);
+  }
+}
+
+TEST(SpatialAlgebraTest, SpatialInertiaIsTheParallelAxisTheorem) {
+  MTRandom random(15);
+  for (int trial = 0; trial < 20; ++trial) {
+    const real m = draw(random, 0.5, 3);
+    const real inertia = draw(random, 0.1, 2);
+    const Vector2 c{draw(random, -2, 2), draw(random, -2, 2)};
+    const SymmetricMatrix3 d = spatialInertia(m, inertia, c);
+    // About the centre of mass the inertia is diag(I, m, m); moved back from c to the origin:
+    const SymmetricMatrix3 moved =
+        translateInertiaBack(SymmetricMatrix3::diagonal(inertia, m, m), c);
+    expectNear(d.toMatrix(), moved.toMatrix(), kTol);
+    // And by definition: the centre of mass moves at v_O + omega x c, so the force is
+    // m (v_O + omega x c) and the moment about O is I omega + c x force.
+    const Vector3 v = randomVector(random);
+    const Vector2 vc = linearPart(v) + cross(angularPart(v), c);
+    const Vector2 force = vc * m;
+    expectNear(d * v, forceVector(inertia * angularPart(v) + cross(c, force), force), kTol);
+  }
+}
+
+TEST(SpatialAlgebraTest, ForceInAFrameIsTheWorldForceTransformed) {
+  MTRandom random(16);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Vector2 force{draw(random, -2, 2), draw(random, -2, 2)};
+    const Vector2 point{draw(random, -3, 3), draw(random, -3, 3)};
+    const Vector2 origin{draw(random, -3, 3), draw(random, -3, 3)};
+    const real angle = draw(random, -4, 4);
+    // The world force about the world origin, then X* into the frame.
+    const Vector3 expected = PlanarTransform::fromAngleAndOrigin(angle, origin)
+                                 .applyToForce(spatialForceAt(force, point, {0, 0}));
+    expectNear(spatialForceInFrame(force, point, origin, angle), expected, kTol);
+  }
+}
+
+}  // namespace
+}  // namespace thyrix
