@@ -1,5 +1,6 @@
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixLite/PhysicalObject.h>
+#include <ThyrixLite/VisualSensor.h>
 
 namespace thyrix {
 
@@ -18,6 +19,8 @@ void PhysicalObject::computeDerivativesWithoutContacts() {
 void PhysicalObject::control() {}
 
 void PhysicalObject::updateSensors(const World& /*world*/) {}
+
+std::span<const VisualSensor> PhysicalObject::visualSensors() const { return {}; }
 
 void PhysicalObject::onRegistered(Simulator& /*simulator*/) noexcept {}
 

@@ -16,6 +16,7 @@ namespace thyrix {
 
 class Primitive;
 class Simulator;
+class VisualSensor;
 class World;
 
 /// A rigid body of the plane with quasistatic (Aristotelian) dynamics: its velocity is the
@@ -69,6 +70,9 @@ class PhysicalObject : public GraphicalObject {
   /// Phase 2 of a step, after contact detection: updates this object's visual sensors from
   /// the world. The default does nothing.
   virtual void updateSensors(const World& world);
+
+  /// The visual sensors this object carries, for drawing and inspection (none by default).
+  [[nodiscard]] virtual std::span<const VisualSensor> visualSensors() const;
 
   /// The class name used in error messages, e.g. "Circle".
   [[nodiscard]] virtual std::string typeName() const { return "PhysicalObject"; }

@@ -73,8 +73,33 @@ int TactileSensors::cappedRectangleSector(Vector2 localPoint, real l) const {
   }
   const real along = std::clamp(x + l, real(0), 2 * l);  // 0 at the left end
   const real segment = 2 * l / static_cast<real>(side);
-  if (y < 0) return sectorOf(along, segment, side);                    // lower side, rightwards
-  return side + cap + sectorOf(2 * l - along, segment, side);          // upper side, leftwards
+  if (y < 0) return sectorOf(along, segment, side);            // lower side, rightwards
+  return side + cap + sectorOf(2 * l - along, segment, side);  // upper side, leftwards
+}
+
+Vector2 TactileSensors::circleSectorMiddle(int k, real radius) const {
+  const real span = 2 * pi<real> / static_cast<real>(activations_.size());
+  const real angle = startAngle_ + (static_cast<real>(k) + real(0.5)) * span;
+  return Vector2{std::cos(angle), std::sin(angle)} * radius;
+}
+
+Vector2 TactileSensors::cappedRectangleSectorMiddle(int k, real l, real R) const {
+  const int side = perSide_;
+  const int cap = perCap_;
+  const real segment = side > 0 ? 2 * l / static_cast<real>(side) : 0;
+  const real capSpan = cap > 0 ? pi<real> / static_cast<real>(cap) : 0;
+  const auto middle = [](int i) { return static_cast<real>(i) + real(0.5); };
+  if (k < side) return {-l + middle(k) * segment, -R};  // lower side, rightwards
+  k -= side;
+  if (k < cap) {  // right cap, from -90 degrees
+    const real angle = -pi<real> / 2 + middle(k) * capSpan;
+    return Vector2{l, 0} + Vector2{std::cos(angle), std::sin(angle)} * R;
+  }
+  k -= cap;
+  if (k < side) return {l - middle(k) * segment, R};  // upper side, leftwards
+  k -= side;
+  const real angle = pi<real> / 2 + middle(k) * capSpan;  // left cap, from 90 degrees
+  return Vector2{-l, 0} + Vector2{std::cos(angle), std::sin(angle)} * R;
 }
 
 void TactileSensors::clear() { std::fill(activations_.begin(), activations_.end(), real(0)); }

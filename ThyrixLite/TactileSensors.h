@@ -43,6 +43,11 @@ class TactileSensors {
   /// The sensor under a contact at @p localPoint of a capped rectangle of half length @p l.
   [[nodiscard]] int cappedRectangleSector(Vector2 localPoint, real l) const;
 
+  /// The middle of sensor @p k on the outline of a circle of @p radius (primitive frame).
+  [[nodiscard]] Vector2 circleSectorMiddle(int k, real radius) const;
+  /// The middle of sensor @p k on the outline of a capped rectangle (primitive frame).
+  [[nodiscard]] Vector2 cappedRectangleSectorMiddle(int k, real l, real R) const;
+
   /// Starts a step: all sums to zero.
   void clear();
   /// Adds a contact force of magnitude @p force to sensor @p sector.

@@ -1,6 +1,7 @@
 #include <ThyrixLite/ColorDefinitions.h>
 #include <ThyrixLite/GlobalContactInfo.h>
 #include <ThyrixLite/Primitive.h>
+#include <ThyrixLite/VisualSensor.h>
 #include <ThyrixLite/WorldDrawing.h>
 
 #include <algorithm>
@@ -35,8 +36,49 @@ void drawContact(const GlobalContactInfo& contact, GUI& gui, const DrawOptions& 
 // Sensor overlays, drawn over the objects and contacts: tactile sectors (DrawOptions::tactile)
 // and visual rays (DrawOptions::visualRays) of the objects that carry such sensors. No object
 // of the core exposes sensors in this version, so no object has an overlay to draw.
-void drawSensorOverlays(const Simulator& /*simulator*/, GUI& /*gui*/,
-                        const DrawOptions& /*options*/) {}
+/// A colour from white (0) to @p full (1).
+Color shade(Color full, real activation) {
+  const auto mix = [activation](std::uint8_t channel) {
+    return static_cast<std::uint8_t>(255 -
+                                     (255 - channel) * std::clamp(activation, real(0), real(1)));
+  };
+  return {mix(full.red), mix(full.green), mix(full.blue), 255};
+}
+
+void drawTactile(const Primitive& primitive, GUI& gui) {
+  const TactileSensors& sensors = primitive.tactileSensors();
+  const auto activations = sensors.activations();
+  const real dot = primitive.radius() * real(0.15);
+  for (int k = 0; k < static_cast<int>(activations.size()); ++k) {
+    const Vector2 local = primitive.shapeType() == ShapeType::Circle
+                              ? sensors.circleSectorMiddle(k, primitive.radius() - dot)
+                              : sensors.cappedRectangleSectorMiddle(k, primitive.halfLength(),
+                                                                    primitive.radius() - dot);
+    gui.drawCircle(primitive.toWorld(local), dot, 0, shade(colors::red, activations[k]),
+                   colors::darkGray);
+  }
+}
+
+void drawRays(const VisualSensor& eye, GUI& gui) {
+  // Each pixel's central ray, 1 m long, darker the more the pixel is covered.
+  const Vector2 from = eye.eyePosition();
+  for (int i = 0; i < eye.pixelCount(); ++i) {
+    const auto [begin, end] = eye.pixelBounds(i);
+    const real angle = (begin + end) / 2;
+    const Vector2 to = from + Vector2{std::cos(angle), std::sin(angle)};
+    gui.drawLine(from, to, shade(colors::cyan, real(0.25) + real(0.75) * eye.activations()[i]));
+  }
+}
+
+void drawSensorOverlays(const Simulator& simulator, GUI& gui, const DrawOptions& options) {
+  for (const PhysicalObject& object : simulator.objects) {
+    if (options.tactile)
+      for (const Primitive* primitive : object.primitives())
+        if (primitive->tactileSensors().enabled()) drawTactile(*primitive, gui);
+    if (options.visualRays)
+      for (const VisualSensor& eye : object.visualSensors()) drawRays(eye, gui);
+  }
+}
 
 }  // namespace
 

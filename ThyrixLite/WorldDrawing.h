@@ -22,11 +22,11 @@ struct DrawOptions {
   bool contactForces = false;
   /// Length of a contact-force line per newton (m/N).
   real forceScale = real(0.1);
-  /// The activation of tactile sensors, sector by sector, for objects that carry them. The core
-  /// objects expose no tactile sensors in this version, so this option draws nothing yet.
+  /// The activation of every tactile sensor: a dot at the middle of its sector, from white
+  /// (0) to red (1).
   bool tactile = false;
-  /// The rays of visual sensors' pixels, for objects that carry them. The core objects expose
-  /// no visual sensors in this version, so this option draws nothing yet.
+  /// The central ray of every visual sensor's pixels (PhysicalObject::visualSensors), 1 m
+  /// long, from pale to dark cyan with the pixel's activation.
   bool visualRays = false;
 };
 

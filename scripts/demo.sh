@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Builds Thyrix (Release) and runs the main console demo; extra arguments go to the demo.
+# Builds Thyrix (Release) and runs the main job: SpherusText, Spherus with a random controller
+# in its arena, printing the agent's centre at each printed step. Arguments go to SpherusText
+# (see --help).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release -DTHYRIX_BUILD_TESTS=OFF >/dev/null
-cmake --build build/release -j"$(nproc)" --target ArenaText >/dev/null
-exec build/release/examples/Demo/ArenaText "$@"
+cmake --build build/release -j"$(nproc)" --target SpherusText >/dev/null
+exec build/release/examples/Spherus/SpherusText "$@"

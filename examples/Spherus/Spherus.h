@@ -67,6 +67,7 @@ class Spherus : public Elastoid {
   [[nodiscard]] const Parameters& parameters() const { return parameters_; }
   [[nodiscard]] const VisualSensor& eye(int circle) const { return eyes_[circle]; }
 
+  [[nodiscard]] std::span<const VisualSensor> visualSensors() const override { return eyes_; }
   /// Phase 2: turns the circles' frames to the heading and updates the eyes.
   void updateSensors(const World& world) override;
   /// Phase 7: sensors -> controller -> rocket forces and link length for the next step.

@@ -112,7 +112,7 @@ int main(int argc, char** argv) {
       if (!options.svgDirectory.empty() && step % options.svgEvery == 0) {
         SvgGUI svg({0, 0}, {world.size, world.size}, 600);
         DrawOptions draw;
-        draw.contacts = draw.contactForces = true;
+        draw.contacts = draw.contactForces = draw.tactile = draw.visualRays = true;
         drawWorld(simulator, svg, draw);
         char name[64];
         std::snprintf(name, sizeof name, "/step_%06ld.svg", step);
