@@ -11,7 +11,9 @@ namespace thyrix {
 /// `r -/+ (l, 0)`.
 class CappedRectangle : public Primitive {
  public:
-  /// @param l half length of the straight part, @param R half width (the caps' radius)
+  /// @param l half length of the straight part
+  /// @param R half width (the caps' radius)
+  /// @param mass quasistatic mass (N s/m)
   /// @throws InvalidArgument naming "CappedRectangle.l", ".R" or ".mass" unless positive and finite
   CappedRectangle(real l, real R, real mass);
 

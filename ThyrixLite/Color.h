@@ -13,6 +13,7 @@ struct Color {
   std::uint8_t blue = 0;     ///< blue channel
   std::uint8_t alpha = 255;  ///< opacity, 255 = opaque
 
+  /// Same channels.
   constexpr bool operator==(const Color&) const = default;
 };
 

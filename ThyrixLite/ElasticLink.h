@@ -17,7 +17,10 @@ namespace thyrix {
 /// step: stable and monotone for any stiffness, and equal to `k e` when `dt k w` is small.
 class ElasticLink : public GraphicalObject {
  public:
+  /// @param a, b the two bodies
   /// @param anchorA, anchorB anchor points in the frames of @p a and @p b
+  /// @param restLength the length the link pulls toward (m)
+  /// @param stiffness force per metre of stretch (N/m)
   /// @throws InvalidArgument naming "ElasticLink.restLength" (negative or not finite),
   ///         "ElasticLink.stiffness" (not positive and finite), "ElasticLink.anchorA"/"anchorB",
   ///         or "ElasticLink.b" (the same body as a)

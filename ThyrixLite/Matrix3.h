@@ -27,7 +27,9 @@ struct Matrix3 {
     return r;
   }
 
+  /// The entry at @p row, @p col.
   constexpr real& operator()(int row, int col) { return m[row][col]; }
+  /// The entry at @p row, @p col.
   constexpr real operator()(int row, int col) const { return m[row][col]; }
 
   /// The transpose.
@@ -51,18 +53,21 @@ struct Matrix3 {
         r.m[i][j] = m[i][0] * o.m[0][j] + m[i][1] * o.m[1][j] + m[i][2] * o.m[2][j];
     return r;
   }
+  /// Entry-wise sum.
   constexpr Matrix3 operator+(const Matrix3& o) const {
     Matrix3 r;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) r.m[i][j] = m[i][j] + o.m[i][j];
     return r;
   }
+  /// Difference.
   constexpr Matrix3 operator-(const Matrix3& o) const {
     Matrix3 r;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) r.m[i][j] = m[i][j] - o.m[i][j];
     return r;
   }
+  /// Entry-wise product with a scalar.
   constexpr Matrix3 operator*(real s) const {
     Matrix3 r;
     for (int i = 0; i < 3; ++i)

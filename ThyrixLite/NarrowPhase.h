@@ -24,9 +24,9 @@ struct ManifoldPoint {
 /// The contact points between two shapes: none, one, or two sharing a normal (flat contact
 /// of a capsule on a border or on a parallel capsule).
 struct Manifold {
-  Vector2 normal;  ///< unit normal from A to B
-  int count = 0;   ///< number of valid points
-  std::array<ManifoldPoint, 2> points{};
+  Vector2 normal;                         ///< unit normal from A to B
+  int count = 0;                          ///< number of valid points
+  std::array<ManifoldPoint, 2> points{};  ///< the first `count` are valid
 };
 
 /// A border (half-plane through @p point with unit @p normal into the free side) and a circle.

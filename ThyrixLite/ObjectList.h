@@ -21,21 +21,33 @@ class ObjectList {
   /// Iterates the objects as references.
   class iterator {
    public:
+    /// Forward iterator.
     using iterator_category = std::forward_iterator_tag;
+    /// The objects' type.
     using value_type = PhysicalObject;
+    /// Distance type.
     using difference_type = std::ptrdiff_t;
+    /// Pointer to an object.
     using pointer = PhysicalObject*;
+    /// Reference to an object.
     using reference = PhysicalObject&;
 
+    /// An iterator over objects.
     iterator() = default;
+    /// An iterator over objects.
     explicit iterator(Storage::const_iterator it) : it_(it) {}
+    /// The object.
     reference operator*() const { return **it_; }
+    /// The object.
     pointer operator->() const { return it_->get(); }
+    /// Advances to the next object.
     iterator& operator++() {
       ++it_;
       return *this;
     }
+    /// Advances to the next object.
     iterator operator++(int) { return iterator(it_++); }
+    /// Exact equality.
     bool operator==(const iterator&) const = default;
 
    private:
@@ -48,7 +60,9 @@ class ObjectList {
   [[nodiscard]] bool empty() const { return items_.empty(); }
   /// The object registered @p i-th.
   PhysicalObject& operator[](std::size_t i) const { return *items_[i]; }
+  /// The first object, for range-for.
   [[nodiscard]] iterator begin() const { return iterator(items_.begin()); }
+  /// Past the last object.
   [[nodiscard]] iterator end() const { return iterator(items_.end()); }
 
  private:
@@ -66,7 +80,9 @@ class ContactList {
   [[nodiscard]] bool empty() const { return items_.empty(); }
   /// The @p i-th contact.
   const GlobalContactInfo& operator[](std::size_t i) const { return items_[i]; }
+  /// The first contact, for range-for.
   [[nodiscard]] auto begin() const { return items_.cbegin(); }
+  /// Past the last contact.
   [[nodiscard]] auto end() const { return items_.cend(); }
 
  private:

@@ -56,6 +56,8 @@ class Primitive : public PhysicalObject {
   }
 
  protected:
+  /// A primitive of @p type with its size, mass and moment of inertia (checked by the shape
+  /// classes, which name their own fields).
   Primitive(ShapeType type, real radius, real halfLength, real mass, real momentOfInertia)
       : PhysicalObject(mass, momentOfInertia),
         shapeType_(type),

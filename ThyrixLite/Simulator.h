@@ -83,6 +83,7 @@ class Simulator : public World {
   [[nodiscard]] ContactSolverKind contactSolver() const { return solverKind_; }
   /// Solver tuning, readable and writable.
   ContactSolverSettings& solverSettings() { return settings_; }
+  /// Solver tuning, read-only.
   [[nodiscard]] const ContactSolverSettings& solverSettings() const { return settings_; }
   /// What the last step did.
   [[nodiscard]] const StepStatistics& statistics() const { return statistics_; }
@@ -138,8 +139,8 @@ class Simulator : public World {
 
   std::vector<Shape> shapes_;
   std::vector<ShapeGeometry> geometry_;
-  std::vector<std::uint32_t> borderShapes_;  // half-planes: tested against every shape
-  std::vector<std::uint32_t> gridShapes_;    // the others, in the broad phase
+  std::vector<std::uint32_t> borderShapes_;    // half-planes: tested against every shape
+  std::vector<std::uint32_t> gridShapes_;      // the others, in the broad phase
   std::vector<Primitive*> sensingPrimitives_;  // primitives with tactile sensors, this step
   std::vector<BoundingBox> gridBoxes_;
   std::vector<BoxPair> pairs_;

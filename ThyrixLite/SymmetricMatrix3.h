@@ -11,9 +11,12 @@ namespace thyrix {
 
 /// A symmetric 3x3 matrix (a quasistatic "mass" or mobility), stored as its upper triangle.
 struct SymmetricMatrix3 {
-  real xx = 0, xy = 0, xz = 0;  ///< first row
-  real yy = 0, yz = 0;          ///< second row, from the diagonal
-  real zz = 0;                  ///< third row, the diagonal
+  real xx = 0;  ///< row 1, column 1
+  real xy = 0;  ///< row 1, column 2 (and row 2, column 1)
+  real xz = 0;  ///< row 1, column 3 (and row 3, column 1)
+  real yy = 0;  ///< row 2, column 2
+  real yz = 0;  ///< row 2, column 3 (and row 3, column 2)
+  real zz = 0;  ///< row 3, column 3
 
   /// A diagonal matrix.
   static constexpr SymmetricMatrix3 diagonal(real a, real b, real c) {
@@ -34,6 +37,7 @@ struct SymmetricMatrix3 {
     return {xx * v.x + xy * v.y + xz * v.z, xy * v.x + yy * v.y + yz * v.z,
             xz * v.x + yz * v.y + zz * v.z};
   }
+  /// Entry-wise sum.
   constexpr SymmetricMatrix3 operator+(const SymmetricMatrix3& o) const {
     return {xx + o.xx, xy + o.xy, xz + o.xz, yy + o.yy, yz + o.yz, zz + o.zz};
   }

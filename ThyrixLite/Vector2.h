@@ -13,21 +13,25 @@ struct Vector2 {
   real x = 0;  ///< x coordinate
   real y = 0;  ///< y coordinate
 
+  /// Adds another vector.
   constexpr Vector2& operator+=(Vector2 o) {
     x += o.x;
     y += o.y;
     return *this;
   }
+  /// Subtracts another vector.
   constexpr Vector2& operator-=(Vector2 o) {
     x -= o.x;
     y -= o.y;
     return *this;
   }
+  /// Scales by a scalar.
   constexpr Vector2& operator*=(real s) {
     x *= s;
     y *= s;
     return *this;
   }
+  /// Exact equality.
   constexpr bool operator==(const Vector2&) const = default;
 
   /// Dot product.
@@ -53,11 +57,17 @@ struct Vector2 {
   }
 };
 
+/// Sum.
 constexpr Vector2 operator+(Vector2 a, Vector2 b) { return {a.x + b.x, a.y + b.y}; }
+/// Difference.
 constexpr Vector2 operator-(Vector2 a, Vector2 b) { return {a.x - b.x, a.y - b.y}; }
+/// Negation.
 constexpr Vector2 operator-(Vector2 a) { return {-a.x, -a.y}; }
+/// Product with a scalar.
 constexpr Vector2 operator*(Vector2 a, real s) { return {a.x * s, a.y * s}; }
+/// Product with a scalar.
 constexpr Vector2 operator*(real s, Vector2 a) { return {a.x * s, a.y * s}; }
+/// Division by a scalar.
 constexpr Vector2 operator/(Vector2 a, real s) { return {a.x / s, a.y / s}; }
 
 /// Dot product.

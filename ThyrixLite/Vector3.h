@@ -16,24 +16,28 @@ struct Vector3 {
   real y = 0;  ///< second component
   real z = 0;  ///< third component (the angular part of a body quantity)
 
+  /// Adds another vector.
   constexpr Vector3& operator+=(const Vector3& o) {
     x += o.x;
     y += o.y;
     z += o.z;
     return *this;
   }
+  /// Subtracts another vector.
   constexpr Vector3& operator-=(const Vector3& o) {
     x -= o.x;
     y -= o.y;
     z -= o.z;
     return *this;
   }
+  /// Scales by a scalar.
   constexpr Vector3& operator*=(real s) {
     x *= s;
     y *= s;
     z *= s;
     return *this;
   }
+  /// Exact equality.
   constexpr bool operator==(const Vector3&) const = default;
 
   /// Dot product.
@@ -44,10 +48,15 @@ struct Vector3 {
   [[nodiscard]] constexpr Vector2 xy() const { return {x, y}; }
 };
 
+/// Sum.
 constexpr Vector3 operator+(Vector3 a, const Vector3& b) { return a += b; }
+/// Difference.
 constexpr Vector3 operator-(Vector3 a, const Vector3& b) { return a -= b; }
+/// Negation.
 constexpr Vector3 operator-(const Vector3& a) { return {-a.x, -a.y, -a.z}; }
+/// Product with a scalar.
 constexpr Vector3 operator*(Vector3 a, real s) { return a *= s; }
+/// Product with a scalar.
 constexpr Vector3 operator*(real s, Vector3 a) { return a *= s; }
 
 }  // namespace thyrix

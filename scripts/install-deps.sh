@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what building and testing Thyrix needs on Debian 12 (bookworm).
 set -euo pipefail
-packages=(cmake g++ make libgtest-dev libbenchmark-dev)
+packages=(cmake g++ make libgtest-dev libbenchmark-dev doxygen)
 if [ "${THYRIX_WITH_GUI:-0}" = 1 ]; then packages+=(libwxgtk3.2-dev); fi
 missing=()
 for p in "${packages[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done

@@ -25,6 +25,9 @@ run() {  # name, then cmake options
 
 run release -DCMAKE_BUILD_TYPE=Release
 
+echo "=== reference manual (Doxygen, warnings are errors) ==="
+cmake --build build/release --target docs
+
 echo "=== find_package(Thyrix) from another project ==="
 rm -rf build/install build/consumer
 cmake --install build/release --prefix build/install >/dev/null
