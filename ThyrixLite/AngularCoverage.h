@@ -39,7 +39,7 @@ struct AngularExtent {
 
   /// The valid intervals.
   [[nodiscard]] std::span<const AngularInterval> pieces() const {
-    return std::span<const AngularInterval>(intervals.data(), static_cast<std::size_t>(count));
+    return {intervals.data(), static_cast<std::size_t>(count)};
   }
 };
 

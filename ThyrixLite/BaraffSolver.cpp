@@ -9,14 +9,6 @@ namespace {
 /// Tolerance, relative to the scale of A, below which a rate counts as zero.
 constexpr real relativeTolerance = std::is_same_v<real, float> ? real(1e-5) : real(1e-11);
 
-/// `J_i^X D_X^-1 (J_j^X)^T` for one body X shared by rows i and j, with signs sI, sJ (A: -1, B:
-/// +1).
-real coupling(const ContactConstraint& i, real signI, real armI, const ContactConstraint& j,
-              real signJ, real armJ, const SolverBody& body) {
-  return signI * signJ *
-         (body.inverseMass * dot(i.normal, j.normal) + body.inverseInertia * armI * armJ);
-}
-
 }  // namespace
 
 void BaraffSolver::buildMatrix(std::span<const std::uint32_t> island,
@@ -28,13 +20,7 @@ void BaraffSolver::buildMatrix(std::span<const std::uint32_t> island,
   for (std::size_t i = 0; i < n; ++i) {
     const ContactConstraint& ri = rows[island[i]];
     for (std::size_t j = i; j < n; ++j) {
-      const ContactConstraint& rj = rows[island[j]];
-      real value = 0;
-      // A body shared by the two rows couples them; fixed bodies have zero inverse mass.
-      if (ri.a == rj.a) value += coupling(ri, -1, ri.armA, rj, -1, rj.armA, bodies[ri.a]);
-      if (ri.a == rj.b) value += coupling(ri, -1, ri.armA, rj, 1, rj.armB, bodies[ri.a]);
-      if (ri.b == rj.a) value += coupling(ri, 1, ri.armB, rj, -1, rj.armA, bodies[ri.b]);
-      if (ri.b == rj.b) value += coupling(ri, 1, ri.armB, rj, 1, rj.armB, bodies[ri.b]);
+      const real value = rigidCoupling(ri, rows[island[j]], bodies);
       matrix_[i * n + j] = value;
       matrix_[j * n + i] = value;
     }
@@ -127,9 +113,37 @@ bool BaraffSolver::solve(std::span<const std::uint32_t> island, std::span<Contac
                          std::span<SolverBody> bodies) {
   const std::size_t n = island.size();
   size_ = n;
-  pivots_ = 0;
   buildMatrix(island, rows, bodies);
   slack_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const ContactConstraint& row = rows[island[i]];
+    slack_[i] = row.normalVelocity(bodies[row.a], bodies[row.b]) - row.target;
+  }
+  if (!pivot()) return false;
+  for (std::size_t i = 0; i < n; ++i) {
+    ContactConstraint& row = rows[island[i]];
+    row.force = std::max(real(0), force_[i]);
+    row.applyImpulse(row.force, bodies[row.a], bodies[row.b]);
+  }
+  return true;
+}
+
+bool BaraffSolver::solveMatrix(std::span<const real> matrix, std::span<const real> slack,
+                               std::span<real> forces) {
+  const std::size_t n = slack.size();
+  size_ = n;
+  matrix_.assign(matrix.begin(), matrix.end());
+  slack_.assign(slack.begin(), slack.end());
+  scale_ = 0;
+  for (std::size_t i = 0; i < n; ++i) scale_ = std::max(scale_, matrix_[i * n + i]);
+  if (!pivot()) return false;
+  for (std::size_t i = 0; i < n; ++i) forces[i] = std::max(real(0), force_[i]);
+  return true;
+}
+
+bool BaraffSolver::pivot() {
+  const std::size_t n = size_;
+  pivots_ = 0;
   force_.assign(n, 0);
   direction_.resize(n);
   slackRate_.resize(n);
@@ -137,10 +151,6 @@ bool BaraffSolver::solve(std::span<const std::uint32_t> island, std::span<Contac
   clamped_.clear();
   factor_.resize(n * n);
   solution_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const ContactConstraint& row = rows[island[i]];
-    slack_[i] = row.normalVelocity(bodies[row.a], bodies[row.b]) - row.target;
-  }
 
   const real rateTolerance = relativeTolerance * scale_;
   const int maxPivots = 10 * static_cast<int>(n) + 50;
@@ -198,11 +208,6 @@ bool BaraffSolver::solve(std::span<const std::uint32_t> island, std::span<Contac
     }
   }
 
-  for (std::size_t i = 0; i < n; ++i) {
-    ContactConstraint& row = rows[island[i]];
-    row.force = std::max(real(0), force_[i]);
-    row.applyImpulse(row.force, bodies[row.a], bodies[row.b]);
-  }
   return true;
 }
 

@@ -29,6 +29,13 @@ class BaraffSolver {
   bool solve(std::span<const std::uint32_t> island, std::span<ContactConstraint> rows,
              std::span<SolverBody> bodies);
 
+  /// The same method on an LCP given directly: the symmetric positive semi-definite matrix
+  /// @p matrix (row-major, n x n) and the slack `b - c` of every row at zero force; writes the
+  /// forces to @p forces. Used for islands whose bodies are not all rigid (articulated agents),
+  /// whose matrix is built from test-force responses. @return false as for solve().
+  bool solveMatrix(std::span<const real> matrix, std::span<const real> slack,
+                   std::span<real> forces);
+
   /// Makes room for islands of up to @p contacts contacts without further allocation.
   void reserve(std::size_t contacts);
 
@@ -40,6 +47,8 @@ class BaraffSolver {
 
   void buildMatrix(std::span<const std::uint32_t> island, std::span<const ContactConstraint> rows,
                    std::span<const SolverBody> bodies);
+  /// The pivoting itself, on matrix_ and slack_ (size_ rows): fills force_.
+  bool pivot();
   /// Fills direction_ (df) and slackRate_ (dw) for raising f_d by 1 while C stays at w = c.
   void computeDirection(std::size_t d);
   /// Adds contact @p i to C, extending the factor by one row; false if A_CC would be singular.

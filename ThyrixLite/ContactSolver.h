@@ -11,6 +11,7 @@
 #include <ThyrixLite/Vector2.h>
 
 #include <cstdint>
+#include <span>
 #include <type_traits>
 
 namespace thyrix {
@@ -77,5 +78,22 @@ struct ContactConstraint {
     bodyB.omega += armB * deltaForce * bodyB.inverseInertia;
   }
 };
+
+/// `A_ij = J_i D^-1 J_j^T` between two rows through the rigid bodies they share (fixed bodies
+/// and bodies with zero inverse mass contribute nothing).
+inline real rigidCoupling(const ContactConstraint& i, const ContactConstraint& j,
+                          std::span<const SolverBody> bodies) {
+  // The body-X part of J_i D^-1 J_j^T, with signs sI, sJ (A: -1, B: +1).
+  const auto part = [&](real signI, real armI, real signJ, real armJ, const SolverBody& body) {
+    return signI * signJ *
+           (body.inverseMass * dot(i.normal, j.normal) + body.inverseInertia * armI * armJ);
+  };
+  real value = 0;
+  if (i.a == j.a) value += part(-1, i.armA, -1, j.armA, bodies[i.a]);
+  if (i.a == j.b) value += part(-1, i.armA, 1, j.armB, bodies[i.a]);
+  if (i.b == j.a) value += part(1, i.armB, -1, j.armA, bodies[i.b]);
+  if (i.b == j.b) value += part(1, i.armB, 1, j.armB, bodies[i.b]);
+  return value;
+}
 
 }  // namespace thyrix

@@ -32,4 +32,24 @@ int GaussSeidelSolver::solve(std::span<const std::uint32_t> island,
   return sweep;
 }
 
+int GaussSeidelSolver::solveMatrix(std::span<const real> matrix, std::span<const real> slack,
+                                   std::span<real> forces, const ContactSolverSettings& settings) {
+  const std::size_t n = slack.size();
+  int sweep = 0;
+  while (sweep < settings.gaussSeidelMaxIterations) {
+    ++sweep;
+    real largestChange = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const real* row = &matrix[k * n];
+      real residual = slack[k];
+      for (std::size_t j = 0; j < n; ++j) residual += row[j] * forces[j];
+      const real newForce = std::max(real(0), forces[k] - settings.relaxation * residual / row[k]);
+      largestChange = std::max(largestChange, std::abs(newForce - forces[k]) * row[k]);
+      forces[k] = newForce;
+    }
+    if (largestChange <= settings.gaussSeidelTolerance) break;
+  }
+  return sweep;
+}
+
 }  // namespace thyrix

@@ -17,6 +17,12 @@ class GaussSeidelSolver {
   /// Solves the rows listed in @p island. @return the number of sweeps done.
   static int solve(std::span<const std::uint32_t> island, std::span<ContactConstraint> rows,
                    std::span<SolverBody> bodies, const ContactSolverSettings& settings);
+
+  /// The same method on an LCP given directly: @p matrix (row-major, n x n, symmetric positive
+  /// semi-definite, positive diagonal) and @p slack, `b - c` at zero force; @p forces holds the
+  /// starting forces and receives the result. @return the number of sweeps done.
+  static int solveMatrix(std::span<const real> matrix, std::span<const real> slack,
+                         std::span<real> forces, const ContactSolverSettings& settings);
 };
 
 }  // namespace thyrix

@@ -17,17 +17,17 @@ class Primitive;
 /// `(shapeA, shapeB, feature)` identifies the contact stably from step to step while the same
 /// features touch (the indices are those of the primitives in registration order).
 struct GlobalContactInfo {
-  PhysicalObject* objectA = nullptr;      ///< body A (the owner of primitiveA)
-  PhysicalObject* objectB = nullptr;      ///< body B
+  PhysicalObject* objectA = nullptr;  ///< body A (the owner of primitiveA)
+  PhysicalObject* objectB = nullptr;  ///< body B
   Primitive* primitiveA = nullptr;    ///< the primitive of A that is touched
   Primitive* primitiveB = nullptr;    ///< the primitive of B that is touched
-  std::uint32_t bodyA = 0;                ///< index of objectA in Simulator::objects
-  std::uint32_t bodyB = 0;                ///< index of objectB in Simulator::objects
-  std::uint32_t shapeA = 0;               ///< index of primitiveA among the simulator's primitives
-  std::uint32_t shapeB = 0;               ///< index of primitiveB among the simulator's primitives
-  std::uint32_t feature = 0;              ///< which feature pair of the two primitives (0 or 1)
-  Vector2 point;                          ///< contact point, midway between the two surfaces
-  Vector2 normal;                         ///< unit normal from A to B
+  std::uint32_t bodyA = 0;            ///< index of objectA in Simulator::objects
+  std::uint32_t bodyB = 0;            ///< index of objectB in Simulator::objects
+  std::uint32_t shapeA = 0;           ///< index of primitiveA among the simulator's primitives
+  std::uint32_t shapeB = 0;           ///< index of primitiveB among the simulator's primitives
+  std::uint32_t feature = 0;          ///< which feature pair of the two primitives (0 or 1)
+  Vector2 point;                      ///< contact point, midway between the two surfaces
+  Vector2 normal;                     ///< unit normal from A to B
   real depth = 0;  ///< overlap along the normal; negative is a gap (speculative contact)
   real force = 0;  ///< normal force magnitude found by the contact solver, >= 0
 };

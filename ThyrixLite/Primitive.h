@@ -36,11 +36,16 @@ class Primitive : public PhysicalObject {
   [[nodiscard]] real localAngle() const { return localAngle_; }
 
   /// Places this primitive in @p owner's frame (used by composed bodies when adding a part).
-  void attachTo(PhysicalObject& owner, Vector2 localPosition, real localAngle) {
+  /// With @p rigid false the primitive only belongs to the owner, which places it itself (the
+  /// links of an articulated agent, see MultiBodyObject).
+  void attachTo(PhysicalObject& owner, Vector2 localPosition, real localAngle, bool rigid = true) {
     owner_ = &owner;
     localPosition_ = localPosition;
     localAngle_ = localAngle;
+    rigid_ = rigid;
   }
+  /// True when the primitive keeps a fixed pose in its owner's frame.
+  [[nodiscard]] bool rigidlyAttached() const { return rigid_; }
   /// The tactile sensors of this primitive (none unless set up; see Circle and CappedRectangle).
   [[nodiscard]] const TactileSensors& tactileSensors() const { return tactile_; }
   /// Shortcut for `tactileSensors().activations()`.
@@ -50,7 +55,7 @@ class Primitive : public PhysicalObject {
 
   /// Moves `r` and `alpha` to follow the owner (no-op for a standalone primitive).
   void followOwner() {
-    if (owner_ == this) return;
+    if (owner_ == this || !rigid_) return;
     r = owner_->toWorld(localPosition_);
     alpha = owner_->alpha + localAngle_;
   }
@@ -77,6 +82,7 @@ class Primitive : public PhysicalObject {
   PhysicalObject* owner_ = this;
   Vector2 localPosition_;
   real localAngle_ = 0;
+  bool rigid_ = true;
 };
 
 }  // namespace thyrix

@@ -8,6 +8,7 @@
 #include <ThyrixLite/ContactSolver.h>
 #include <ThyrixLite/Integrator.h>
 #include <ThyrixLite/Islands.h>
+#include <ThyrixLite/MultiBodyObject.h>
 #include <ThyrixLite/ObjectList.h>
 #include <ThyrixLite/Primitive.h>
 #include <ThyrixLite/World.h>
@@ -128,6 +129,10 @@ class Simulator : public World {
   void updateGeometry();
   void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void solveIsland(std::span<const std::uint32_t> island);
+  void solveGeneralIsland(std::span<const std::uint32_t> island);
+  [[nodiscard]] bool movable(std::uint32_t body) const {
+    return multiBodies_[body] != nullptr || !objects[body].fixed;
+  }
   void updateTactileSensors();
 
   real timestep_;
@@ -155,6 +160,25 @@ class Simulator : public World {
   Islands islands_;
   BaraffSolver baraff_;
   ContactForceCache lastForces_;
+
+  // Multi-body objects (articulated agents): their islands are solved on an explicit matrix.
+  std::vector<MultiBodyObject*> multiBodies_;  // per object, null for a rigid body
+  bool hasMultiBodies_ = false;
+  std::vector<MultiBodyObject::InternalConstraint> internal_;  // this step's joint limits
+  std::vector<std::uint32_t> internalOwner_;                   // their objects
+  struct Side {  // one multi-body side of a row of a general island
+    std::uint32_t owner;
+    std::uint32_t row;  // position in the island
+    MultiBodyObject::UnitForce force;
+  };
+  std::vector<Side> sides_;
+  std::vector<MultiBodyObject::UnitForce> ownerForces_;
+  std::vector<real> ownerMagnitudes_;
+  std::vector<std::uint32_t> ownerRows_;
+  std::vector<real> denseMatrix_;
+  std::vector<real> denseSlack_;
+  std::vector<real> denseForces_;
+  std::vector<real> response_;
 
   PhysicalObject* dragged_ = nullptr;
   real dragMaxStep_ = 0;  // metres per step, from the dragged body's size

@@ -90,7 +90,12 @@ void VisualSensor::update(const ObjectList& objects) {
   const Vector2 leftEdge = rotate(view, cosHalfField_, sinHalfField_);
 
   coverage_.clear();
-  coverage_.reserve(2 * objects.size());  // at most two pieces per primitive, once warmed up
+  if (objects.size() != objectsSized_) {  // the world has grown: at most two pieces a primitive
+    std::size_t primitives = 0;
+    for (const PhysicalObject& object : objects) primitives += object.primitives().size();
+    coverage_.reserve(2 * primitives);
+    objectsSized_ = objects.size();
+  }
   for (const PhysicalObject& object : objects) {
     for (const Primitive* primitive : object.primitives()) {
       if (&primitive->owner() == body_) continue;

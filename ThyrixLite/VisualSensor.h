@@ -9,6 +9,7 @@
 #include <ThyrixLite/ThyrixParameters.h>
 #include <ThyrixLite/Vector2.h>
 
+#include <cstddef>
 #include <span>
 #include <utility>
 #include <vector>
@@ -27,8 +28,9 @@ namespace thyrix {
 /// contains or touches the eye covers every pixel.
 ///
 /// The sensor reads the primitives' world pose (`r`, `alpha`) as it is when update() runs; for
-/// the parts of a composed body the simulator keeps it current. update() allocates nothing once
-/// it has run on a world of the same size. The sensor refers to its body, which must outlive it.
+/// the parts of a composed body the simulator keeps it current. update() sizes its buffer for
+/// two intervals per primitive when the number of objects changes, so it allocates nothing on
+/// later calls with the same objects. The sensor refers to its body, which must outlive it.
 class VisualSensor {
  public:
   /// @param body the body the eye is attached to (it is not seen)
@@ -94,6 +96,7 @@ class VisualSensor {
   real sinHalfField_;
   std::vector<real> activations_;
   AngularCoverage coverage_;
+  std::size_t objectsSized_ = 0;  // the number of objects coverage_ was last sized for
 };
 
 }  // namespace thyrix

@@ -100,8 +100,10 @@ BoundingBox worldBounds(const World& world) {
       // The pose from the owner, as Primitive::followOwner sets it at each step; for a
       // standalone primitive (its own owner, at local position zero) this is its r and alpha.
       const PhysicalObject& owner = primitive->owner();
-      const Vector2 centre = owner.toWorld(primitive->localPosition());
-      const real angle = owner.alpha + primitive->localAngle();
+      const bool followsOwner = primitive->rigidlyAttached();
+      const Vector2 centre =
+          followsOwner ? owner.toWorld(primitive->localPosition()) : primitive->r;
+      const real angle = followsOwner ? owner.alpha + primitive->localAngle() : primitive->alpha;
       const Vector2 axis = type == ShapeType::Capsule
                                ? Vector2{primitive->halfLength(), 0}.rotated(angle)
                                : Vector2{};

@@ -69,6 +69,11 @@ ArticulatedBody::ArticulatedBody(real baseMass, real baseInertia,
 
   // Every work array is sized here, once: the passes below only overwrite them.
   const std::size_t n = links_.size();
+  parentSlot_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int slot = links_[i].parent + 1;  // the base, -1, is at slot 0
+    parentSlot_[i] = static_cast<std::size_t>(slot);
+  }
   q_.assign(n, 0);
   origin_.assign(n + 1, Vector2{});
   angle_.assign(n + 1, 0);
@@ -137,7 +142,7 @@ void ArticulatedBody::forwardKinematics() {
   comOffset_[0] = {};
   for (std::size_t i = 0; i < links_.size(); ++i) {
     const ArticulatedLink& l = links_[i];
-    const std::size_t p = static_cast<std::size_t>(l.parent + 1);
+    const std::size_t p = parentSlot_[i];
     const std::size_t self = i + 1;
     const Vector2 shift = rotate(axis_[p], l.jointPosition);
     shift_[i] = shift;
@@ -176,7 +181,7 @@ void ArticulatedBody::computeArticulatedInertias() {
     transmitted.yy = da.yy - u.y * u.y * inverseD;
     transmitted.yz = da.yz - u.y * u.z * inverseD;
     transmitted.zz = da.zz - u.z * u.z * inverseD;
-    SymmetricMatrix3& parent = articulatedInertia_[static_cast<std::size_t>(links_[i].parent + 1)];
+    SymmetricMatrix3& parent = articulatedInertia_[parentSlot_[i]];
     parent = parent + translateInertiaBack(transmitted, shift_[i]);
   }
   inertiasStale_ = false;
@@ -225,7 +230,7 @@ void ArticulatedBody::checkTestForce(const TestForce& force) const {
 
 void ArticulatedBody::depositTestForce(const TestForce& force, real magnitude) {
   if (force.kind == TestForce::Kind::PointForce) {
-    const std::size_t slot = static_cast<std::size_t>(force.index + 1);
+    const int slot = force.index + 1;
     bias_[slot] -= spatialForceAt(force.direction * magnitude, force.point, origin_[slot]);
   } else {
     jointTorque_[static_cast<std::size_t>(force.index)] += force.torque * magnitude;
@@ -261,7 +266,7 @@ void ArticulatedBody::biasAndOutwardPasses(Output& out) {
     const real ui = jointTorque_[i] - pa.x;
     jointBias_[i] = ui;
     const Vector3 passed = pa + jointForceDirection_[i] * (ui * inverseJointInertia_[i]);
-    bias_[static_cast<std::size_t>(links_[i].parent + 1)] += translateForceBack(passed, shift_[i]);
+    bias_[parentSlot_[i]] += translateForceBack(passed, shift_[i]);
   }
 
   // The free-floating base: nothing acts on it from outside the tree, so 0 = D^A_0 v_0 + p^A_0
@@ -277,8 +282,7 @@ void ArticulatedBody::biasAndOutwardPasses(Output& out) {
   // qdot_i = (u_i - U_i^T v'_i) / d_i, v_i = v'_i + S_i qdot_i.
   for (std::size_t i = 0; i < links_.size(); ++i) {
     const std::size_t self = i + 1;
-    Vector3 v =
-        translateMotion(originVelocity_[static_cast<std::size_t>(links_[i].parent + 1)], shift_[i]);
+    Vector3 v = translateMotion(originVelocity_[parentSlot_[i]], shift_[i]);
     const real qdot = (jointBias_[i] - jointForceDirection_[i].dot(v)) * inverseJointInertia_[i];
     v.x += qdot;
     originVelocity_[self] = v;

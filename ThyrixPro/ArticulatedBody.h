@@ -10,6 +10,7 @@
 #include <ThyrixLite/Vector3.h>
 #include <ThyrixPro/ArticulatedLink.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -268,6 +269,7 @@ class ArticulatedBody {
   std::vector<Vector3> originVelocity_;               ///< spatial velocity at the frame origin
 
   // Per link (joint) i.
+  std::vector<std::size_t> parentSlot_;  ///< the parent's slot in the per-body arrays
   std::vector<Vector2> shift_;  ///< origin minus the parent's origin: X_i is a pure translation
   std::vector<Vector3> jointForceDirection_;  ///< U_i = D^A_i S_i
   std::vector<real> inverseJointInertia_;     ///< 1 / d_i, d_i = S_i^T D^A_i S_i

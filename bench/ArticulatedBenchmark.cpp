@@ -26,6 +26,7 @@ struct Chain {
   }
   static std::vector<ArticulatedLink> links(int count) {
     std::vector<ArticulatedLink> result;
+    result.reserve(static_cast<std::size_t>(count));
     // Each link 0.5 long, jointed at its parent's tip (the first at the base's edge).
     for (int i = 0; i < count; ++i)
       result.push_back(

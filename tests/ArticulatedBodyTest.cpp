@@ -144,7 +144,8 @@ struct ReferenceKinematics {
     com.push_back(origin.back());
     for (std::size_t i = 0; i < p.links.size(); ++i) {
       const ArticulatedLink& l = p.links[i];
-      const auto parent = static_cast<std::size_t>(l.parent + 1);
+      const int parentSlot = l.parent + 1;
+      const auto parent = static_cast<std::size_t>(parentSlot);
       const Exact a = angle[parent];
       const Point j{
           origin[parent].x + std::cos(a) * l.jointPosition.x - std::sin(a) * l.jointPosition.y,
@@ -305,9 +306,10 @@ Comparison compare(const ArticulatedBody::Output& out, const DenseReference& ref
   const std::vector<Exact> v = ref.bodyVelocities(u);
   for (int b = 0; b <= ref.n; ++b) {
     const Vector3& w = out.velocities[static_cast<std::size_t>(b)];
-    add(w.y, v[3 * b]);
-    add(w.z, v[3 * b + 1]);
-    add(w.x, v[3 * b + 2]);
+    const std::size_t row = 3 * static_cast<std::size_t>(b);
+    add(w.y, v[row]);
+    add(w.z, v[row + 1]);
+    add(w.x, v[row + 2]);
   }
   for (int i = 0; i < ref.n; ++i) add(out.jointRates[i], u[ref.firstJoint + i]);
   return c;
@@ -337,7 +339,8 @@ TEST(ArticulatedBodyTest, KinematicsMatchTheDefinition) {
     const ReferenceKinematics ref(p);
     const real tol = (isFloat ? real(2e-5) : real(1e-12)) * real(10 + k.links);
     for (int b = -1; b < k.links; ++b) {
-      const auto s = static_cast<std::size_t>(b + 1);
+      const int slot = b + 1;
+      const auto s = static_cast<std::size_t>(slot);
       EXPECT_NEAR(body.origin(b).x, static_cast<double>(ref.origin[s].x), tol) << "body " << b;
       EXPECT_NEAR(body.origin(b).y, static_cast<double>(ref.origin[s].y), tol) << "body " << b;
       EXPECT_NEAR(body.centerOfMass(b).x, static_cast<double>(ref.com[s].x), tol) << "body " << b;
@@ -534,7 +537,8 @@ TEST(ArticulatedBodyTest, RespondEqualsSolveWithTheSameForce) {
       if (t.kind == ArticulatedBody::TestForce::Kind::JointTorque) {
         torques[static_cast<std::size_t>(t.index)] = t.torque;
       } else {
-        wrenches[static_cast<std::size_t>(t.index + 1)] =
+        const int slot = t.index + 1;
+        wrenches[static_cast<std::size_t>(slot)] =
             spatialForceAt(t.direction, t.point, body.centerOfMass(t.index));
       }
       body.solve(torques, wrenches, fromSolve);
@@ -621,6 +625,7 @@ TEST(ArticulatedBodyTest, ConstraintMatrixColumnByColumnIsSymmetricPsdAndMatches
       // Dense: K = J_c M^-1 J_c^T, one solve per column.
       const DenseReference ref(p, fixed);
       std::vector<std::vector<Exact>> rows;
+      rows.reserve(constraints.size());
       for (const auto& c : constraints) rows.push_back(ref.constraintRow(c));
       Exact scale = 0, error = 0, asymmetry = 0, trace = 0;
       for (int j = 0; j < m; ++j) {
@@ -748,7 +753,7 @@ std::vector<ArticulatedLink> threeLinkChain() {
 }
 
 TEST(ArticulatedBodyTest, ValidationNamesTheField) {
-  auto build = [](std::vector<ArticulatedLink> links) {
+  auto build = [](const std::vector<ArticulatedLink>& links) {
     return [links] { ArticulatedBody body(1, 1, links); };
   };
   EXPECT_EQ(thrownField(build(threeLinkChain())), "<no exception>");
