@@ -7,6 +7,7 @@
 #include <ThyrixLite/Border.h>
 #include <ThyrixLite/CappedRectangle.h>
 #include <ThyrixLite/Circle.h>
+#include <ThyrixLite/ComposedPhysicalObject.h>
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixLite/Simulator.h>
 #include <ThyrixLite/VisualSensor.h>
@@ -206,6 +207,25 @@ TEST_F(VisualSensorTest, PartsOfTheOwnBodyAreNotSeen) {
   part.attachTo(part, {}, 0);
   sensor.update(world.objects);
   expectActivations(sensor, {real(2) / 3});
+}
+
+TEST_F(VisualSensorTest, ComposedBodies) {
+  // The sensor's body: two circles of radius 0.5 at (0, 0) and (0, -2), the eye at the first's
+  // centre looking along +x, all around in six pixels of pi/3. Its parts are not seen.
+  Simulator scene;  // without the fixture's body, which surrounds the origin
+  auto own = std::make_unique<ComposedPhysicalObject>();
+  own->add(std::make_unique<Circle>(real(0.5), real(1)), {0, 0});
+  own->add(std::make_unique<Circle>(real(0.5), real(1)), {0, -2});
+  ComposedPhysicalObject& ownBody = scene.registerObject(std::move(own));
+  // Another body of two circles R = 1 at d = 2 in directions 0 and pi/6: its parts' arcs
+  // [-pi/6, pi/6] and [0, pi/3] overlap; the union covers half of pixel 2 and all of pixel 3.
+  auto other = std::make_unique<ComposedPhysicalObject>();
+  other->add(std::make_unique<Circle>(1, real(1)), polar(2, 0));
+  other->add(std::make_unique<Circle>(1, real(1)), polar(2, kPi / 6));
+  scene.registerObject(std::move(other));
+  VisualSensor sensor(ownBody, ownBody.toLocal({0, 0}), 0, 6, kPi / 3);
+  sensor.update(scene.objects);
+  expectActivations(sensor, {0, 0, real(0.5), 1, 0, 0});
 }
 
 TEST_F(VisualSensorTest, BordersAreNotSeen) {
@@ -511,6 +531,15 @@ TEST_F(VisualSensorTest, UpdateAllocatesNothingAfterTheFirstCall) {
   for (int i = 0; i < 40; ++i)
     addCapsule(real(0.3), real(0.1), {real(0.25) * static_cast<real>(i), real(9)},
                real(0.1) * static_cast<real>(i));
+  // Composed bodies have more primitives than objects.
+  for (int i = 0; i < 3; ++i) {
+    auto composed = std::make_unique<ComposedPhysicalObject>();
+    for (int k = 0; k < 8; ++k)
+      composed->add(
+          std::make_unique<Circle>(real(0.1), real(1)),
+          {real(2) + real(2) * static_cast<real>(i), real(0.3) + real(0.2) * static_cast<real>(k)});
+    world.registerObject(std::move(composed));
+  }
   VisualSensor sensor(*circles[0], {real(0.2), 0}, 0, 14, real(0.15));
   sensor.update(world.objects);
   const long before = allocationCount.load();
