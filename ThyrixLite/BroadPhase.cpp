@@ -25,6 +25,14 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPa
   pairs.clear();
   const auto count = static_cast<std::uint32_t>(boxes.size());
   if (count < 2) return;
+  // Few boxes: testing every pair is cheaper than building the grid (measured: a 22-body
+  // arena spent a quarter of its step in the grid).
+  if (count <= smallCount) {
+    for (std::uint32_t i = 0; i < count; ++i)
+      for (std::uint32_t j = i + 1; j < count; ++j)
+        if (boxes[i].overlaps(boxes[j])) pairs.push_back({i, j});
+    return;
+  }
 
   real meanExtent = 0;
   for (const BoundingBox& box : boxes) meanExtent += extent(box);

@@ -37,6 +37,9 @@ struct BoxPair {
 /// warmed up, finding pairs allocates nothing.
 class BroadPhase {
  public:
+  /// Up to this many boxes, every pair is tested directly.
+  static constexpr std::uint32_t smallCount = 48;
+
   /// Replaces @p pairs with every overlapping pair of @p boxes.
   void findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
 

@@ -141,8 +141,19 @@ void Simulator::detectContacts() {
   updateGeometry();
   broadPhase_.findPairs(gridBoxes_, pairs_);
   for (const BoxPair& pair : pairs_) addContacts(gridShapes_[pair.first], gridShapes_[pair.second]);
-  for (const std::uint32_t border : borderShapes_)
-    for (const std::uint32_t shape : gridShapes_) addContacts(border, shape);
+  for (const std::uint32_t border : borderShapes_) {
+    const Vector2 point = geometry_[border].p0;
+    const Vector2 normal = geometry_[border].p1;
+    for (std::size_t i = 0; i < gridShapes_.size(); ++i) {
+      // The box (margin included) lies entirely on the free side: no contact is possible.
+      const BoundingBox& box = gridBoxes_[i];
+      const Vector2 centre = (box.lower + box.upper) * real(0.5);
+      const Vector2 half = (box.upper - box.lower) * real(0.5);
+      const real reach = std::abs(normal.x) * half.x + std::abs(normal.y) * half.y;
+      if (dot(centre - point, normal) - reach > 0) continue;
+      addContacts(border, gridShapes_[i]);
+    }
+  }
   statistics_.contacts = contacts.size();
   for (PhysicalObject& object : objects) object.updateSensors(*this);
 }

@@ -41,7 +41,7 @@ struct Vector2 {
   /// Squared length.
   [[nodiscard]] constexpr real lengthSquared() const { return x * x + y * y; }
   /// Euclidean length.
-  [[nodiscard]] real length() const { return std::hypot(x, y); }
+  [[nodiscard]] real length() const { return std::sqrt(x * x + y * y); }
   /// This vector turned by +90 degrees: `(-y, x)`.
   [[nodiscard]] constexpr Vector2 perpendicular() const { return {-y, x}; }
   /// This vector rotated by @p angle radians (counter-clockwise).
