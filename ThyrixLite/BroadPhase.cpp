@@ -34,10 +34,16 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPa
     return;
   }
 
+  // Cells as small as the largest box allows (about one box per cell for similar sizes), but
+  // no larger than twice the mean: rare big boxes are handled as oversized instead.
   real meanExtent = 0;
-  for (const BoundingBox& box : boxes) meanExtent += extent(box);
+  real maxExtent = 0;
+  for (const BoundingBox& box : boxes) {
+    meanExtent += extent(box);
+    maxExtent = std::max(maxExtent, extent(box));
+  }
   meanExtent /= static_cast<real>(count);
-  const real cellSize = std::max(2 * meanExtent, realEpsilon);
+  const real cellSize = std::max(std::min(maxExtent, 2 * meanExtent), realEpsilon);
 
   std::uint32_t bucketCount = 1;
   while (bucketCount < 2 * count) bucketCount <<= 1;
@@ -70,23 +76,27 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPa
   for (std::uint32_t i = 0; i < count; ++i)
     if (cellOfBox_[i] != oversizedMark) sortedBoxes_[bucketCursor_[cellOfBox_[i]]++] = i;
 
-  // Regular pairs: each box against the higher-indexed boxes of its 3 x 3 neighbourhood.
+  // Regular pairs. A box can only overlap boxes whose centres lie in the 3 x 3 cells around
+  // its own; visiting its own cell (higher indices only) and the four "forward" cells (all
+  // boxes) meets every such pair exactly once. A bucket may hold other cells' boxes (hash
+  // collisions): the cell coordinates are compared, so nothing is paired twice.
+  constexpr std::int64_t forward[4][2] = {{1, -1}, {1, 0}, {1, 1}, {0, 1}};
   for (std::uint32_t i = 0; i < count; ++i) {
     if (cellOfBox_[i] == oversizedMark) continue;
-    std::array<std::uint32_t, 9> visited{};
-    int visitedCount = 0;
-    for (std::int64_t dy = -1; dy <= 1; ++dy) {
-      for (std::int64_t dx = -1; dx <= 1; ++dx) {
-        const std::uint32_t bucket = hashCell(cellX_[i] + dx, cellY_[i] + dy, mask);
-        // Two neighbouring cells may hash to one bucket: visit it once, or pairs repeat.
-        if (std::find(visited.begin(), visited.begin() + visitedCount, bucket) !=
-            visited.begin() + visitedCount)
-          continue;
-        visited[visitedCount++] = bucket;
-        for (std::uint32_t k = bucketStart_[bucket]; k < bucketStart_[bucket + 1]; ++k) {
-          const std::uint32_t j = sortedBoxes_[k];
-          if (j > i && boxes[i].overlaps(boxes[j])) pairs.push_back({i, j});
-        }
+    const std::int64_t x = cellX_[i];
+    const std::int64_t y = cellY_[i];
+    const std::uint32_t own = cellOfBox_[i];
+    for (std::uint32_t k = bucketStart_[own]; k < bucketStart_[own + 1]; ++k) {
+      const std::uint32_t j = sortedBoxes_[k];
+      if (j > i && cellX_[j] == x && cellY_[j] == y && boxes[i].overlaps(boxes[j]))
+        pairs.push_back({i, j});
+    }
+    for (const auto& [dx, dy] : forward) {
+      const std::uint32_t bucket = hashCell(x + dx, y + dy, mask);
+      for (std::uint32_t k = bucketStart_[bucket]; k < bucketStart_[bucket + 1]; ++k) {
+        const std::uint32_t j = sortedBoxes_[k];
+        if (cellX_[j] == x + dx && cellY_[j] == y + dy && boxes[i].overlaps(boxes[j]))
+          pairs.push_back({std::min(i, j), std::max(i, j)});
       }
     }
   }

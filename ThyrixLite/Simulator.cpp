@@ -8,6 +8,16 @@
 #include <cmath>
 
 namespace thyrix {
+namespace {
+
+/// Makes room for @p needed elements, growing geometrically: registering objects one by one
+/// must not reallocate every array each time (quadratic in the number of objects).
+template <class T>
+void reserveFor(std::vector<T>& vector, std::size_t needed) {
+  if (needed > vector.capacity()) vector.reserve(std::max(needed, 2 * vector.capacity()));
+}
+
+}  // namespace
 
 Simulator::Simulator(real timestep) : timestep_(timestep) {
   requirePositive(timestep, "Simulator.timestep");
@@ -22,16 +32,16 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
   // Reserve everything registration will append to, so completing it cannot fail.
   std::size_t shapes = 0;
   for (const PhysicalObject* object : added) shapes += object->primitives().size();
-  shapes_.reserve(shapes_.size() + shapes);
-  geometry_.reserve(shapes_.size() + shapes);
-  borderShapes_.reserve(borderShapes_.size() + shapes);
-  sensingPrimitives_.reserve(shapes_.size() + shapes);
-  gridShapes_.reserve(gridShapes_.size() + shapes);
-  gridBoxes_.reserve(gridShapes_.size() + shapes);
-  bodies_.reserve(objects.size() + added.size());
-  movable_.reserve(objects.size() + added.size());
-  multiBodies_.reserve(objects.size() + added.size());
-  objectContactStart_.reserve(objects.size() + added.size() + 1);
+  reserveFor(shapes_, shapes_.size() + shapes);
+  reserveFor(geometry_, shapes_.size() + shapes);
+  reserveFor(borderShapes_, borderShapes_.size() + shapes);
+  reserveFor(sensingPrimitives_, shapes_.size() + shapes);
+  reserveFor(gridShapes_, gridShapes_.size() + shapes);
+  reserveFor(gridBoxes_, gridShapes_.size() + shapes);
+  reserveFor(bodies_, objects.size() + added.size());
+  reserveFor(movable_, objects.size() + added.size());
+  reserveFor(multiBodies_, objects.size() + added.size());
+  reserveFor(objectContactStart_, objects.size() + added.size() + 1);
 }
 
 void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) noexcept {

@@ -2,6 +2,8 @@
 #include <ThyrixLite/Primitive.h>
 #include <ThyrixLite/World.h>
 
+#include <algorithm>
+
 namespace thyrix {
 
 void World::draw(GUI& gui) const {
@@ -31,7 +33,8 @@ void World::adopt(std::unique_ptr<PhysicalObject> object) {
   const std::size_t index = objects.items_.size();
   std::vector<PhysicalObject*> added{object.get()};
   for (const auto& body : object->subBodies_) added.push_back(body.get());
-  objects.items_.reserve(index + added.size());
+  if (index + added.size() > objects.items_.capacity())  // geometric growth: see Simulator
+    objects.items_.reserve(std::max(index + added.size(), 2 * objects.items_.capacity()));
   prepareRegistration(added);
 
   // The object comes first, so its phase hooks run before its sub-bodies' in every step.
