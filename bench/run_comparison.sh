@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Runs the comparison of issue 7 in one go: Thyrix side by side with Box2D 2.4 and Chipmunk 7
+# (each included when its library was found; this script installs nothing), then prints the
+# tables of bench/README.md.
+#
+#   bench/run_comparison.sh                 # the full suite, 3 repetitions, medians
+#   bench/run_comparison.sh --quick         # every scene 10 to 20 times shorter
+#   bench/run_comparison.sh --benchmark_filter=pile    # any PeerBenchmarks option passes on
+#
+# Environment: BUILD_DIR (default build/bench), REPETITIONS (default 3), JOBS (default nproc).
+# The JSON results are kept in $BUILD_DIR/peer_results.json.
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${BUILD_DIR:-$root/build/bench}
+repetitions=${REPETITIONS:-3}
+jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
+
+# Release, benchmarks on; the examples provide Spherus (spherus and batch scenes); the tests
+# are not needed here.
+mkdir -p "$build"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DTHYRIX_BUILD_BENCHMARKS=ON \
+  -DTHYRIX_BUILD_EXAMPLES=ON -DTHYRIX_BUILD_TESTS=OFF >"$build/configure.log" 2>&1 ||
+  { cat "$build/configure.log"; exit 1; }
+grep 'PeerBenchmarks:' "$build/configure.log" || true
+cmake --build "$build" -j "$jobs" --target PeerBenchmarks
+
+results=$build/peer_results.json
+echo "Running PeerBenchmarks ($repetitions repetitions; $(nproc) CPUs, load $(cut -d' ' -f1-3 /proc/loadavg))"
+"$build/bench/PeerBenchmarks" --benchmark_repetitions="$repetitions" \
+  --benchmark_report_aggregates_only=true --benchmark_out="$results" \
+  --benchmark_out_format=json "$@"
+echo
+python3 "$root/bench/comparison_table.py" "$results"
