@@ -14,7 +14,11 @@ namespace thyrix {
 /// inverse mass of the two anchors along the link (rotation included). An explicit step would be
 /// stable only for `dt k w < 2`; the link applies instead the force of the implicit step,
 /// `F = k e / (1 + dt k w)`, which relaxes the stretch by the factor `1 / (1 + dt k w)` per
-/// step: stable and monotone for any stiffness, and equal to `k e` when `dt k w` is small.
+/// step: for a link alone, stable and monotone for any stiffness, and equal to `k e` when
+/// `dt k w` is small. Each link is made implicit on its own, not the network: where several
+/// links pull on the same bodies their pulls add up, and a dense, stiff network can still
+/// overshoot. Keep `dt` times the summed stiffness of the links on a body, over its mass,
+/// below about 2 (Pac documents its own bound).
 class ElasticLink : public GraphicalObject {
  public:
   /// @param a, b the two bodies
@@ -59,6 +63,8 @@ class ElasticLink : public GraphicalObject {
   real restLength_;
   real stiffness_;
   real tension_ = 0;
+  bool anchorAAtCentre_;  // zero anchors: no rotation to compute and no torque to apply
+  bool anchorBAtCentre_;
 };
 
 }  // namespace thyrix

@@ -4,6 +4,6 @@
 # (see --help).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release -DTHYRIX_BUILD_TESTS=OFF >/dev/null
-cmake --build build/release -j"$(nproc)" --target SpherusText >/dev/null
-exec build/release/examples/Spherus/SpherusText "$@"
+cmake -S . -B build/demo -DCMAKE_BUILD_TYPE=Release -DTHYRIX_BUILD_TESTS=OFF >/dev/null
+cmake --build build/demo -j"$(nproc)" --target SpherusText >/dev/null
+exec build/demo/examples/Spherus/SpherusText "$@"

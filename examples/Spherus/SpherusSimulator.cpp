@@ -45,6 +45,9 @@ SpherusSimulator::SpherusSimulator(const Options& options, std::unique_ptr<Contr
     circle.r = p;
     obstacles_.push_back(&circle);
   }
+  // Room for more simultaneous contacts than the arena sees (a few), so that no step ever
+  // allocates, not even the first one with a contact.
+  reserveContacts(contactCapacity);
 }
 
 }  // namespace thyrix

@@ -27,6 +27,9 @@ class SpherusSimulator : public Simulator {
   /// @throws InvalidArgument naming "SpherusSimulator.objects" (negative or more than fit)
   SpherusSimulator(const Options& options, std::unique_ptr<Controller> controller);
 
+  /// Contacts the buffers are sized for at construction (steps allocate nothing below it).
+  static constexpr std::size_t contactCapacity = 24;
+
   [[nodiscard]] Spherus& spherus() const { return *spherus_; }
   [[nodiscard]] const std::vector<Circle*>& obstacles() const { return obstacles_; }
 
