@@ -2,7 +2,8 @@
 # Installs what building and testing Thyrix needs on Debian 12 (bookworm).
 set -euo pipefail
 packages=(cmake g++ make libgtest-dev libbenchmark-dev doxygen)
-if [ "${THYRIX_WITH_GUI:-0}" = 1 ]; then packages+=(libwxgtk3.2-dev); fi
+# The GUI: wxWidgets to build it; Xvfb, xdotool and python3 for its tests (tests/gui/).
+if [ "${THYRIX_WITH_GUI:-0}" = 1 ]; then packages+=(libwxgtk3.2-dev xvfb xdotool python3); fi
 missing=()
 for p in "${packages[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
 if [ ${#missing[@]} -eq 0 ]; then exit 0; fi

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds and runs every test of Thyrix, warnings as errors:
-#   1. Release, real = double;  2. an installed Thyrix found by find_package from another project;
+#   1. Release, real = double, with the wxWidgets front-end when wxWidgets is installed;
+#   2. an installed Thyrix found by find_package from another project;
 #   3. Debug under AddressSanitizer + UndefinedBehaviorSanitizer;  4. Release, real = float.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -23,7 +24,12 @@ run() {  # name, then cmake options
   ctest_in "build/$name"
 }
 
-run release -DCMAKE_BUILD_TYPE=Release
+# The wxWidgets front-end and its tests (under Xvfb) in the release configuration, when
+# wxWidgets is installed (scripts/install-deps.sh with THYRIX_WITH_GUI=1).
+gui=()
+if dpkg -s libwxgtk3.2-dev >/dev/null 2>&1; then gui=(-DTHYRIX_BUILD_GUI=ON); fi
+
+run release -DCMAKE_BUILD_TYPE=Release "${gui[@]}"
 
 echo "=== reference manual (Doxygen, warnings are errors) ==="
 cmake --build build/release --target docs

@@ -1,0 +1,107 @@
+// SpherusWx: Spherus with the random controller in its arena, in a window. The same options as
+// SpherusText for the world, plus the shared GUI options (speed, geometry, and the automation
+// options --screenshot, --after and --print-drag). Run with --help for the list.
+
+#include "SpherusSimulator.h"
+
+#include <Controller/RandomController.h>
+#include <GUIWx/GuiOptions.h>
+#include <GUIWx/SimulationApp.h>
+
+#include <charconv>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace {
+
+struct Options {
+  std::uint32_t seed = 1;
+  int objects = 20;
+  thyrix::ContactSolverKind solver = thyrix::ContactSolverKind::Baraff;
+  thyrix::GuiOptions gui;
+};
+
+const char* const usage =
+    "Usage: SpherusWx [options]\n"
+    "Shows Spherus with a random controller in its arena; drag objects with the mouse.\n"
+    "  --seed S             seed of the arena layout and of the controller (default 1)\n"
+    "  --objects N          circles in the arena (default 20)\n"
+    "  --solver S           baraff or gauss-seidel (default baraff)\n";
+
+template <class T>
+T number(std::string_view option, std::string_view text, T low) {
+  T value{};
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || value < low)
+    throw std::invalid_argument(std::string(option) + " needs a whole number >= " +
+                                std::to_string(low) + ", not '" + std::string(text) + "'");
+  return value;
+}
+
+Options parse(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view option = argv[i];
+    if (option == "--help") {
+      std::fputs(usage, stdout);
+      std::fputs(thyrix::guiOptionsUsage, stdout);
+      std::fputs("  --help               this text\n", stdout);
+      std::exit(0);
+    }
+    if (const int used = thyrix::parseGuiOption(argc, argv, i, o.gui); used > 0) {
+      i += used - 1;
+      continue;
+    }
+    if (option != "--seed" && option != "--objects" && option != "--solver")
+      throw std::invalid_argument("unknown option: " + std::string(option));
+    if (i + 1 >= argc) throw std::invalid_argument(std::string(option) + " needs a value");
+    const std::string_view value = argv[++i];
+    if (option == "--seed") {
+      o.seed = number<std::uint32_t>(option, value, 0);
+    } else if (option == "--objects") {
+      o.objects = number<int>(option, value, 0);
+    } else if (value == "baraff") {
+      o.solver = thyrix::ContactSolverKind::Baraff;
+    } else if (value == "gauss-seidel") {
+      o.solver = thyrix::ContactSolverKind::GaussSeidel;
+    } else {
+      throw std::invalid_argument("--solver must be baraff or gauss-seidel, not '" +
+                                  std::string(value) + "'");
+    }
+  }
+  return o;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace thyrix;
+  Options options;
+  try {
+    options = parse(argc, argv);
+  } catch (const std::invalid_argument& error) {
+    std::fprintf(stderr, "SpherusWx: %s\n%s", error.what(), usage);
+    std::fputs(guiOptionsUsage, stderr);
+    return 2;
+  }
+
+  SimulationSetup setup;
+  setup.title = "SpherusWx - Thyrix";
+  setup.solver = options.solver;
+  // Called on the simulation thread at start and at each reset: the same seed rebuilds the
+  // same arena and controller.
+  setup.makeWorld = [seed = options.seed, objects = options.objects] {
+    SpherusSimulator::Options world;
+    world.objects = objects;
+    world.seed = seed;
+    return std::make_unique<SpherusSimulator>(world, std::make_unique<RandomController>(seed));
+  };
+  setup.agentSignals = agentSignalsOf<SpherusSimulator>([](const SpherusSimulator& world) {
+    const Spherus& agent = world.spherus();
+    return AgentSignals{agent.sensors(), agent.effectors()};
+  });
+  return runSimulationApp(std::move(setup), options.gui, argv[0]);
+}
