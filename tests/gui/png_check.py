@@ -1,7 +1,11 @@
 #!/usr/bin/env python3
-"""Checks SpherusWx's --screenshot picture against what the program says it drew.
+"""Checks a Thyrix window program's --screenshot picture against what it says it drew.
 
-  png_check.py PICTURE LOG
+  png_check.py PICTURE LOG [--size S] [--colour FIRST-LAST=R,G,B ...]
+
+--size is the side of the square walled arena (default 10, Spherus's); each --colour gives the
+fill of the objects with indices FIRST to LAST; other objects must be blue. Without --colour,
+Spherus's layout is assumed (its two circles, objects 5 and 6, yellow).
 
 LOG is the program's stdout: "screenshot FILE W H scale S centre CX CY step N", then one
 "object INDEX circle X Y R" line per movable shape. The picture must be W x H, not blank, show
@@ -72,7 +76,8 @@ def close(colour, expected):
     return all(abs(a - b) <= TOLERANCE for a, b in zip(colour, expected))
 
 
-def main(picture, log):
+def main(picture, log, size=10.0, colours=None):
+    colours = colours or [(SPHERUS_FIRST, SPHERUS_LAST, YELLOW)]
     header, objects = None, []
     with open(log) as f:
         for line in f:
@@ -100,8 +105,8 @@ def main(picture, log):
         errors.append(f"picture looks blank: {coloured:.1%} non-white, {len(set(sample))} colours")
 
     # The walls x = 0 and x = 10 are dark lines at their projected columns.
-    for wall_x in (0.0, 10.0):
-        px, py = to_pixel(wall_x, 5.0)
+    for wall_x in (0.0, size):
+        px, py = to_pixel(wall_x, size / 2)
         column = [pixel(x, int(py)) for x in range(int(px) - 2, int(px) + 3)
                   if 0 <= x < width]
         if not any(close(p, WALL) for p in column):
@@ -110,7 +115,7 @@ def main(picture, log):
     # Each object's colour at four points halfway out from its projected centre.
     matched = 0
     for index, x, y, r in objects:
-        expected = YELLOW if SPHERUS_FIRST <= index <= SPHERUS_LAST else BLUE
+        expected = next((c for first, last, c in colours if first <= index <= last), BLUE)
         cx, cy = to_pixel(x, y)
         half = 0.5 * r * header["s"]
         hits = 0
@@ -132,6 +137,17 @@ def main(picture, log):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
+    if len(sys.argv) < 3:
         sys.exit(__doc__)
-    sys.exit(main(sys.argv[1], sys.argv[2]))
+    arena, ranges, rest = 10.0, [], sys.argv[3:]
+    while rest:
+        option, value, rest = rest[0], rest[1], rest[2:]
+        if option == "--size":
+            arena = float(value)
+        elif option == "--colour":
+            span, rgb = value.split("=")
+            first, last = (int(v) for v in span.split("-"))
+            ranges.append((first, last, tuple(int(v) for v in rgb.split(","))))
+        else:
+            sys.exit(f"unknown option {option}\n{__doc__}")
+    sys.exit(main(sys.argv[1], sys.argv[2], arena, ranges))

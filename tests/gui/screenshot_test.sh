@@ -2,9 +2,10 @@
 # SpherusWx --screenshot under Xvfb: the program runs 200 steps, saves a PNG of its view and
 # exits 0 on its own; png_check.py then decodes the PNG and checks that each object the program
 # says it drew is there, in its colour, at its projected position, and that the walls show.
-# Usage: screenshot_test.sh path/to/SpherusWx
+# Usage: screenshot_test.sh path/to/program [png_check.py options: --size, --colour ...]
 set -euo pipefail
 APP=$1
+shift
 HERE=$(cd "$(dirname "$0")" && pwd)
 source "$HERE/xvfb.sh"
 start_xvfb
@@ -13,10 +14,10 @@ start_xvfb
   >"$WORK/app.out" 2>"$WORK/app.err" &
 APP_PID=$!
 register_pid $APP_PID
-wait_for_exit $APP_PID 30 || fail "SpherusWx did not exit within 30 s"
-[ "$EXIT_STATUS" = 0 ] || fail "SpherusWx exited with status $EXIT_STATUS"
+wait_for_exit $APP_PID 30 || fail "$(basename "$APP") did not exit within 30 s"
+[ "$EXIT_STATUS" = 0 ] || fail "$(basename "$APP") exited with status $EXIT_STATUS"
 [ -s "$WORK/view.png" ] || fail "no screenshot written"
 grep -q '^screenshot .* step 200$' "$WORK/app.out" || fail "the screenshot is not of step 200"
-python3 "$HERE/png_check.py" "$WORK/view.png" "$WORK/app.out" || fail "the screenshot is wrong"
+python3 "$HERE/png_check.py" "$WORK/view.png" "$WORK/app.out" "$@" || fail "the screenshot is wrong"
 if [ -n "${THYRIX_KEEP_SCREENSHOT:-}" ]; then cp "$WORK/view.png" "$THYRIX_KEEP_SCREENSHOT"; fi
 echo "PASS"
