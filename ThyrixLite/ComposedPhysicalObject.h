@@ -27,9 +27,9 @@ class ComposedPhysicalObject : public PhysicalObject {
   /// is then unchanged.
   template <class T>
   T& add(std::unique_ptr<T> part, Vector2 relativePosition, real relativeAngle = 0) {
-    T& added = *part;
+    T* added = part.get();  // not dereferenced before addPart has refused a null part
     addPart(std::unique_ptr<Primitive>(std::move(part)), relativePosition, relativeAngle);
-    return added;
+    return *added;
   }
 
   /// The centre of mass in the building frame the parts were placed in.

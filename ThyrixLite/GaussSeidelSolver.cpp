@@ -46,6 +46,9 @@ int GaussSeidelSolver::solveMatrix(std::span<const real> matrix, std::span<const
     real largestChange = 0;
     for (std::size_t k = 0; k < n; ++k) {
       const real* row = &matrix[k * n];
+      // A row nothing can move along (an immovable part against a fixed body) takes no force:
+      // dividing by its zero diagonal would poison the whole island.
+      if (!(row[k] > 0)) continue;
       real residual = slack[k];
       for (std::size_t j = 0; j < n; ++j) residual += row[j] * forces[j];
       const real newForce = std::max(real(0), forces[k] - settings.relaxation * residual / row[k]);

@@ -72,6 +72,17 @@ void Simulator::reserveContacts(std::size_t count) {
   baraff_.reserve(
       std::min(count, static_cast<std::size_t>(std::max(settings_.baraffMaxContacts, 0))));
   lastForces_.reserve(count);
+  if (hasMultiBodies_) {  // general islands: their matrix and the objects' sides
+    const std::size_t island = std::min(count, std::size_t{256});
+    for (auto* buffer : {&denseSlack_, &denseForces_, &ownerMagnitudes_}) buffer->reserve(island);
+    denseMatrix_.reserve(island * island);
+    response_.reserve(island * island);
+    sides_.reserve(2 * island);
+    ownerForces_.reserve(2 * island);
+    ownerRows_.reserve(2 * island);
+    internal_.reserve(island);
+    internalOwner_.reserve(island);
+  }
 }
 
 void Simulator::advanceTime() {

@@ -64,8 +64,9 @@ class Simulator : public World {
   /// the tactile sensors then read the forces.
   void solveContacts();
 
-  /// Sizes the per-step buffers for up to @p count contacts, so that steps with no more
-  /// contacts than that allocate nothing. Without it the buffers grow to the largest count
+  /// Sizes the per-step buffers for up to @p count contacts (and, with articulated agents
+  /// registered, islands of up to 256 rows), so that steps with no more contacts than that
+  /// allocate nothing. Without it the buffers grow to the largest count
   /// seen (geometrically), after which steps allocate nothing either.
   void reserveContacts(std::size_t count);
 

@@ -5,6 +5,7 @@
 #include <ThyrixLite/ThyrixParameters.h>
 
 #include <cmath>
+#include <limits>
 
 namespace thyrix {
 
@@ -41,7 +42,13 @@ struct Vector2 {
   /// Squared length.
   [[nodiscard]] constexpr real lengthSquared() const { return x * x + y * y; }
   /// Euclidean length.
-  [[nodiscard]] real length() const { return std::sqrt(x * x + y * y); }
+  [[nodiscard]] real length() const {
+    // sqrt of the square sum is several times faster than hypot; hypot only where the squares
+    // would overflow or underflow (lengths near the limits of `real`).
+    const real squared = x * x + y * y;
+    if (squared < realMax && squared > std::numeric_limits<real>::min()) return std::sqrt(squared);
+    return std::hypot(x, y);
+  }
   /// This vector turned by +90 degrees: `(-y, x)`.
   [[nodiscard]] constexpr Vector2 perpendicular() const { return {-y, x}; }
   /// This vector rotated by @p angle radians (counter-clockwise).

@@ -85,6 +85,7 @@ ArticulatedBody::ArticulatedBody(real baseMass, real baseInertia,
   shift_.assign(n, Vector2{});
   jointForceDirection_.assign(n, Vector3{});
   inverseJointInertia_.assign(n, 0);
+  jointDamping_.assign(n, 0);
   jointTorque_.assign(n, 0);
   jointBias_.assign(n, 0);
   forwardKinematics();
@@ -106,6 +107,20 @@ void ArticulatedBody::setJointAngle(int i, real q) {
   requireFinite(q, "ArticulatedBody.q");
   q_[i] = q;
   forwardKinematics();
+}
+
+void ArticulatedBody::setJointDamping(int i, real damping) {
+  if (i < 0 || i >= linkCount())
+    throw InvalidArgument("ArticulatedBody.jointDamping", "index must be in [0, " +
+                                                              std::to_string(linkCount()) +
+                                                              ") (got " + std::to_string(i) + ")");
+  if (!(damping >= 0) || !std::isfinite(damping))
+    throw InvalidArgument("ArticulatedBody.jointDamping",
+                          "must be finite and non-negative (got " + std::to_string(damping) + ")");
+  real& c = jointDamping_[static_cast<std::size_t>(i)];
+  if (c == damping) return;
+  c = damping;
+  inertiasStale_ = true;  // d_i + c_i enters D^A of every ancestor
 }
 
 void ArticulatedBody::setJointAngles(std::span<const real> q) {
@@ -167,17 +182,25 @@ void ArticulatedBody::computeArticulatedInertias() {
 
   // Leaves to root (reverse index order visits children before parents). Featherstone 2008,
   // section 7.3 and Table 7.1: U_i = I^A_i S_i, d_i = S_i^T U_i, and the parent receives
-  // I^a_i = X_i^T (I^A_i - U_i U_i^T / d_i) X_i.
+  // I^a_i = X_i^T (I^A_i - U_i U_i^T / d_i) X_i. A damped joint (torque -c_i qdot_i) has
+  // S_i^T f_i = tau_i - c_i qdot_i, so its rate solves (d_i + c_i) qdot_i = u_i - U_i^T v'_i and
+  // d_i + c_i replaces d_i in both places.
   for (std::size_t i = links_.size(); i-- > 0;) {
     const SymmetricMatrix3& da = articulatedInertia_[i + 1];
     // S = (1, 0, 0) picks the first column and the top-left entry.
     const Vector3 u{da.xx, da.xy, da.xz};
-    const real inverseD = 1 / da.xx;
+    const real c = jointDamping_[i];
+    const real inverseD = 1 / (da.xx + c);
     jointForceDirection_[i] = u;
     inverseJointInertia_[i] = inverseD;
-    // I^A - U U^T / d has a zero first row and column: a revolute joint transmits no moment
-    // about its own axis, so only the linear block is passed on (before the shift).
+    // The first row of I^A - U U^T / (d + c) is U^T (1 - d / (d + c)) = U^T c / (d + c): zero
+    // for an undamped joint, which transmits no moment about its own axis; a damped joint
+    // passes that fraction of its stiffness on. Written this way the undamped row is exactly
+    // zero, not a difference of equal numbers.
     SymmetricMatrix3 transmitted;
+    transmitted.xx = u.x * c * inverseD;
+    transmitted.xy = u.y * c * inverseD;
+    transmitted.xz = u.z * c * inverseD;
     transmitted.yy = da.yy - u.y * u.y * inverseD;
     transmitted.yz = da.yz - u.y * u.z * inverseD;
     transmitted.zz = da.zz - u.z * u.z * inverseD;
@@ -260,7 +283,7 @@ void ArticulatedBody::respond(std::span<const TestForce> forces, std::span<const
 
 void ArticulatedBody::biasAndOutwardPasses(Output& out) {
   // Inward pass, leaves to root (Table 7.1, second loop): u_i = tau_i - S_i^T p^A_i, and the
-  // parent receives p^a_i = X_i^T (p^A_i + U_i u_i / d_i).
+  // parent receives p^a_i = X_i^T (p^A_i + U_i u_i / (d_i + c_i)).
   for (std::size_t i = links_.size(); i-- > 0;) {
     const Vector3& pa = bias_[i + 1];
     const real ui = jointTorque_[i] - pa.x;
@@ -279,7 +302,7 @@ void ArticulatedBody::biasAndOutwardPasses(Output& out) {
   out.velocities[0] = v0;  // the base frame's origin is its centre of mass
 
   // Outward pass, root to leaves (Table 7.1, third loop): v'_i = X_i v_parent,
-  // qdot_i = (u_i - U_i^T v'_i) / d_i, v_i = v'_i + S_i qdot_i.
+  // qdot_i = (u_i - U_i^T v'_i) / (d_i + c_i), v_i = v'_i + S_i qdot_i.
   for (std::size_t i = 0; i < links_.size(); ++i) {
     const std::size_t self = i + 1;
     Vector3 v = translateMotion(originVelocity_[parentSlot_[i]], shift_[i]);

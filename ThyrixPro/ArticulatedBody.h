@@ -43,10 +43,17 @@ namespace thyrix {
 ///
 /// **The law solved.** With generalized velocities `u = (v_base, omega_base, qdot)` and the
 /// Jacobian J from u to every body's (centre-of-mass velocity, omega),
-/// `(J^T D J) u = J^T F + (0, 0, 0, tau)`, D = diag(m, m, I) per body. solve() computes u in
-/// O(N) by the articulated-body algorithm with velocities in place of accelerations and no
+/// `(J^T D J + C) u = J^T F + (0, 0, 0, tau)`, D = diag(m, m, I) per body and
+/// C = diag(0, 0, 0, c) the joint damping (setJointDamping(), zero by default). solve() computes
+/// u in O(N) by the articulated-body algorithm with velocities in place of accelerations and no
 /// velocity-product terms (Featherstone 2008, chapter 7: section 7.3 and Table 7.1, p. 132;
 /// ALGORITHMS.md section 2).
+///
+/// **Joint damping.** A joint torque `-c_i qdot_i` opposing the joint's own rate enters the
+/// joint equation as `(d_i + c_i) qdot_i = u_i - U_i^T X_i v_parent`, so it is solved implicitly in
+/// the same O(N) passes with `d_i + c_i` in place of `d_i` (also in what the joint passes to its
+/// parent). This is how an agent makes a position servo `tau = k (q* - q - dt qdot)` stable for
+/// any gain k: `c_i = k dt`, and `k (q* - q)` is an ordinary torque.
 ///
 /// **Use.** Set the state (setBasePose(), setJointAngles()), then solve() for the velocities
 /// from torques and external wrenches. A contact solver then builds its constraint matrix K a
@@ -144,6 +151,16 @@ class ArticulatedBody {
   /// articulated inertia is simply not used while it is fixed).
   void setBaseFixed(bool fixed) { baseFixed_ = fixed; }
 
+  /// The damping `c_i` of joint @p i (N m s/rad): the joint feels the torque `-c_i qdot_i`,
+  /// solved implicitly. Zero by default.
+  [[nodiscard]] real jointDamping(int i) const { return jointDamping_[i]; }
+  /// Sets the damping of joint @p i to @p damping (N m s/rad). The articulated inertias depend
+  /// on it, so a change makes the next solve() or respond() recompute them; setting the same
+  /// value again costs nothing.
+  /// @throws InvalidArgument naming "ArticulatedBody.jointDamping" unless @p i is a joint and
+  /// @p damping is finite and non-negative; the body is then unchanged
+  void setJointDamping(int i, real damping);
+
   // --- state ---------------------------------------------------------------------------------
 
   /// The world position of the base's centre of mass, the base frame's origin (m).
@@ -197,8 +214,8 @@ class ArticulatedBody {
 
   /// The inward pass quantities that depend only on the configuration (Featherstone 2008,
   /// section 7.3): each body's articulated inertia `D^A_i` about its frame origin in world
-  /// axes, `U_i = D^A_i S_i` and `d_i = S_i^T U_i`. Cached: solve() and respond() call it only
-  /// when the state has changed since.
+  /// axes, `U_i = D^A_i S_i` and `d_i = S_i^T U_i` (plus the joint damping `c_i`). Cached:
+  /// solve() and respond() call it only when the state or a damping has changed since.
   void computeArticulatedInertias();
 
   /// The velocities from joint torques and external wrenches, in O(N).
@@ -272,7 +289,8 @@ class ArticulatedBody {
   std::vector<std::size_t> parentSlot_;  ///< the parent's slot in the per-body arrays
   std::vector<Vector2> shift_;  ///< origin minus the parent's origin: X_i is a pure translation
   std::vector<Vector3> jointForceDirection_;  ///< U_i = D^A_i S_i
-  std::vector<real> inverseJointInertia_;     ///< 1 / d_i, d_i = S_i^T D^A_i S_i
+  std::vector<real> inverseJointInertia_;     ///< 1 / (d_i + c_i), d_i = S_i^T D^A_i S_i
+  std::vector<real> jointDamping_;            ///< c_i, the implicit joint damping
   std::vector<real> jointTorque_;             ///< tau_i for the current pass
   std::vector<real> jointBias_;               ///< u_i = tau_i - S_i^T p^A_i
 };

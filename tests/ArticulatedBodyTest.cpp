@@ -668,6 +668,187 @@ TEST(ArticulatedBodyTest, VelocityAlongReadsPointVelocitiesAndJointRates) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// Joint damping: (J^T D J + C) u = J^T F + tau with C = diag(0, 0, 0, c), the implicit servo term
+
+/// Random damping per joint, a third of them zero (undamped joints mixed with damped ones).
+std::vector<real> randomDamping(int count, std::uint32_t seed) {
+  MTRandom random(seed);
+  std::vector<real> c;
+  for (int i = 0; i < count; ++i) c.push_back(random.bernoulli(0.3) ? real(0) : draw(random, 0, 5));
+  return c;
+}
+
+/// The dense reference with the joint damping added to the diagonal of J^T D J.
+DenseReference dampedReference(const Problem& p, bool fixedBase, const std::vector<real>& c) {
+  DenseReference ref(p, fixedBase);
+  for (int i = 0; i < ref.n; ++i) ref.M(ref.firstJoint + i, ref.firstJoint + i) += c[i];
+  return ref;
+}
+
+TEST(ArticulatedBodyTest, DampedJointsMatchDenseReference) {
+  for (const Case& k : kCases) {
+    for (const bool fixed : {false, true}) {
+      SCOPED_TRACE(::testing::Message() << k.links << " links, fixed base " << fixed);
+      const Problem p = randomProblem(k.links, k.shape, 77u + static_cast<std::uint32_t>(k.links));
+      ArticulatedBody body = p.build();
+      body.setBaseFixed(fixed);
+      const std::vector<real> c = randomDamping(k.links, 3u + static_cast<std::uint32_t>(k.links));
+      for (int i = 0; i < k.links; ++i) body.setJointDamping(i, c[i]);
+      ArticulatedBody::Output out = body.makeOutput();
+      body.solve(p.torques, p.wrenches, out);
+      const DenseReference ref = dampedReference(p, fixed, c);
+      const Comparison cmp = compare(out, ref, ref.solve(p.torques, p.wrenches));
+      EXPECT_LE(cmp.relative(), relativeTolerance(k.links)) << "scale " << cmp.scale;
+
+      // Test forces see the damped joints too: K = J_c (J^T D J + C)^-1 J_c^T.
+      const auto constraints =
+          randomConstraints(body, 6, 21u + static_cast<std::uint32_t>(k.links));
+      Exact scale = 0, error = 0;
+      for (const auto& cj : constraints) {
+        body.respond(cj, out);
+        const std::vector<Exact> x = choleskySolve(ref.M, ref.constraintRow(cj));
+        for (const auto& ci : constraints) {
+          const std::vector<Exact> row = ref.constraintRow(ci);
+          Exact expected = 0;
+          for (int col = 0; col < ref.dofs; ++col) expected += row[col] * x[col];
+          scale = std::max(scale, std::abs(expected));
+          error = std::max(error, std::abs(body.velocityAlong(out, ci) - expected));
+        }
+      }
+      EXPECT_LE(error, relativeTolerance(k.links) * scale) << "scale " << scale;
+    }
+  }
+}
+
+TEST(ArticulatedBodyTest, ZeroDampingChangesNothing) {
+  // Setting every damping to zero (explicitly) must give bit-identical results to never setting
+  // it: the undamped passes are exactly the original algorithm.
+  const Problem p = randomProblem(20, Shape::Tree, 808);
+  ArticulatedBody plain = p.build();
+  ArticulatedBody zeroed = p.build();
+  for (int i = 0; i < 20; ++i) zeroed.setJointDamping(i, 0);
+  ArticulatedBody::Output a = plain.makeOutput();
+  ArticulatedBody::Output b = zeroed.makeOutput();
+  plain.solve(p.torques, p.wrenches, a);
+  zeroed.solve(p.torques, p.wrenches, b);
+  EXPECT_EQ(a.velocities, b.velocities);
+  EXPECT_EQ(a.jointRates, b.jointRates);
+}
+
+TEST(ArticulatedBodyTest, SingleDampedJointByHand) {
+  // A fixed base and one link jointed at its centre of mass: the joint's effective inertia is
+  // d = I + m l^2 about the joint, so (d + c) qdot = tau, whatever the joint's direction.
+  const real m = 2, inertia = real(0.3), l = real(0.8), c = real(1.7), tau = real(0.9);
+  ArticulatedLink link;
+  link.parent = ArticulatedLink::base;
+  link.jointPosition = {real(0.4), real(-0.2)};
+  link.length = 2 * l;
+  link.centerOfMass = {l, 0};
+  link.mass = m;
+  link.inertia = inertia;
+  ArticulatedBody body(1, 1, {link});
+  body.setBaseFixed(true);
+  body.setBasePose({1, 2}, real(0.3));
+  body.setJointAngle(0, real(-1.1));
+  body.setJointDamping(0, c);
+  EXPECT_EQ(body.jointDamping(0), c);
+  ArticulatedBody::Output out = body.makeOutput();
+  const real torque[] = {tau};
+  body.solve(torque, {}, out);
+  EXPECT_NEAR(out.jointRate(0), tau / (inertia + m * l * l + c), tight);
+  // A unit joint test force: K = 1 / (d + c).
+  body.respond(ArticulatedBody::TestForce::onJoint(0), out);
+  EXPECT_NEAR(out.jointRate(0), 1 / (inertia + m * l * l + c), tight);
+}
+
+TEST(ArticulatedBodyTest, StiffImplicitServoConvergesMonotonically) {
+  // The servo tau = k (q* - q - dt qdot) as damping c = k dt plus the torque k (q* - q): one
+  // joint with effective inertia d (fixed base) gives (d + k dt) qdot = k (q* - q), so the error
+  // shrinks by d / (d + k dt) per step, never changing sign, however large k. Here
+  // k dt / d = 1000: the explicit servo (c = 0) would overshoot by a factor ~1000 and diverge.
+  const real m = 1, inertia = real(0.25), l = real(0.5);
+  const real d = inertia + m * l * l;
+  const real dt = real(0.01);
+  const real k = 1000 * d / dt;
+  const real target = real(1.2);
+  ArticulatedLink link;
+  link.parent = ArticulatedLink::base;
+  link.length = 2 * l;
+  link.centerOfMass = {l, 0};
+  link.mass = m;
+  link.inertia = inertia;
+  ArticulatedBody body(1, 1, {link});
+  body.setBaseFixed(true);
+  body.setJointDamping(0, k * dt);
+  ArticulatedBody::Output out = body.makeOutput();
+  real error = target - body.jointAngle(0);
+  for (int step = 0; step < 5; ++step) {
+    const real torque[] = {k * (target - body.jointAngle(0))};
+    body.solve(torque, {}, out);
+    body.integrate(out, dt);
+    const real next = target - body.jointAngle(0);
+    EXPECT_GE(next, 0) << "overshoot at step " << step;
+    EXPECT_NEAR(next, error * d / (d + k * dt), tight) << "step " << step;
+    EXPECT_LE(next, error) << "step " << step;  // equal only once both are round-off
+    error = next;
+  }
+
+  // A floating 10-link chain with every joint servoed at k dt = 1000 d. The joints are coupled:
+  // the error map is about the joint-space M / (k dt), symmetric positive definite and small,
+  // not diagonal, so a joint may cross its target by a fraction of the others' errors; but the
+  // largest error shrinks by more than a factor 10 every step, down to round-off (the slowest
+  // mode contracts by lambda / (lambda + k dt), lambda the largest eigenvalue of the chain's
+  // joint-space inertia, about 70 d here; an explicit servo would grow it by about 1000).
+  std::vector<ArticulatedLink> chain;
+  for (int i = 0; i < 10; ++i) {
+    link.parent = i - 1;
+    link.jointPosition = i == 0 ? Vector2{real(0.5), 0} : link.tip();
+    chain.push_back(link);
+  }
+  ArticulatedBody floating(2, 1, chain);
+  std::vector<real> targets, torques(10);
+  for (int i = 0; i < 10; ++i) {
+    targets.push_back(real(0.3) * std::sin(real(i) + 1));
+    floating.setJointDamping(i, k * dt);
+  }
+  ArticulatedBody::Output fout = floating.makeOutput();
+  real largest = 1;
+  for (int step = 0; step < 20; ++step) {
+    for (int i = 0; i < 10; ++i) torques[i] = k * (targets[i] - floating.jointAngle(i));
+    floating.solve(torques, {}, fout);
+    floating.integrate(fout, dt);
+    real now = 0;
+    for (int i = 0; i < 10; ++i) {
+      const real e = targets[i] - floating.jointAngle(i);
+      now = std::max(now, std::abs(e));
+    }
+    EXPECT_LE(now, std::max(real(0.1) * largest, real(isFloat ? 1e-5 : 1e-12))) << "step " << step;
+    largest = now;
+  }
+  EXPECT_LT(largest, isFloat ? real(1e-4) : real(1e-9));
+}
+
+TEST(ArticulatedBodyTest, JointDampingValidation) {
+  ArticulatedLink link;
+  ArticulatedBody body(1, 1, {link});
+  for (const real bad : {real(-1), kNaN, kInf}) {
+    try {
+      body.setJointDamping(0, bad);
+      ADD_FAILURE() << "no exception for " << bad;
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(e.field(), "ArticulatedBody.jointDamping");
+    }
+  }
+  try {
+    body.setJointDamping(1, 1);
+    ADD_FAILURE() << "no exception for a bad index";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.field(), "ArticulatedBody.jointDamping");
+  }
+  EXPECT_EQ(body.jointDamping(0), 0);
+}
+
+// ---------------------------------------------------------------------------------------------
 // State, determinism, allocation
 
 TEST(ArticulatedBodyTest, IntegrateMovesTheStateByTheVelocities) {

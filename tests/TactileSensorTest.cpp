@@ -7,8 +7,8 @@
 #include <ThyrixLite/Circle.h>
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixLite/Simulator.h>
-#include <Tools/MathTools.h>
 #include <ThyrixLite/TactileSensors.h>
+#include <Tools/MathTools.h>
 
 #include <gtest/gtest.h>
 
@@ -46,15 +46,16 @@ TEST(TactileSensors, ContactLightsExactlyTheSectorUnderIt) {
 
 TEST(TactileSensors, ActivationSaturatesAtOne) {
   CircleOnFloor scene(4, 0, 2, 0);
-  scene.press(5);  // force 5 > saturation 2
+  scene.press(5);                                       // force 5 > saturation 2
   EXPECT_EQ(scene.circle->tactileActivations()[3], 1);  // [270, 360)
 }
 
 TEST(TactileSensors, SectorsTurnWithTheBody) {
-  // Rotated by +90 degrees, the floor is at body angle -180 = 180 degrees: sector 4 of 8.
-  CircleOnFloor scene(8, 0, 10, pi<real> / 2);
+  // Rotated by +100 degrees, the floor (world -90) is at body angle -190 = 170 degrees:
+  // sector 3 of 8 ([135, 180)), well inside it.
+  CircleOnFloor scene(8, 0, 10, 100 * pi<real> / 180);
   scene.press(3);
-  EXPECT_NEAR(scene.circle->tactileActivations()[4], real(0.3), loose);
+  EXPECT_NEAR(scene.circle->tactileActivations()[3], real(0.3), loose);
   EXPECT_NEAR(scene.circle->tactileActivations()[6], 0, loose);
 }
 
@@ -92,7 +93,8 @@ TEST(TactileSensors, CappedRectangleNumberingIsCounterClockwiseFromLowerLeft) {
 TEST(TactileSensors, CapsuleLyingOnFloorFeelsItsLowerSideAndShareOfWeight) {
   Simulator simulator;
   simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
-  auto& capsule = simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.25), real(1)));
+  auto& capsule =
+      simulator.registerObject(std::make_unique<CappedRectangle>(real(1), real(0.25), real(1)));
   capsule.setTactileSensors(2, 1, 10);
   capsule.r = {0, real(0.25)};
   capsule.externalForce = {0, -4};

@@ -1,0 +1,314 @@
+#include <ThyrixLite/GUI.h>
+#include <ThyrixLite/InvalidArgument.h>
+#include <ThyrixLite/Simulator.h>
+#include <ThyrixPro/ArticulatedAgentBase.h>
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+namespace thyrix {
+
+// --- ArticulatedBasePart ---------------------------------------------------------------------
+
+ArticulatedBasePart ArticulatedBasePart::circle(real radius, real mass, Vector2 position) {
+  ArticulatedBasePart part;
+  part.type = ShapeType::Circle;
+  part.radius = radius;
+  part.mass = mass;
+  part.position = position;
+  return part;
+}
+
+ArticulatedBasePart ArticulatedBasePart::capsule(real halfLength, real radius, real mass,
+                                                 Vector2 position, real angle) {
+  ArticulatedBasePart part;
+  part.type = ShapeType::Capsule;
+  part.radius = radius;
+  part.halfLength = halfLength;
+  part.mass = mass;
+  part.position = position;
+  part.angle = angle;
+  return part;
+}
+
+void ArticulatedBasePart::validate(std::size_t index) const {
+  const std::string where = " of base part " + std::to_string(index);
+  auto positive = [&](real value, const char* field) {
+    if (!(value > 0) || !std::isfinite(value))
+      throw InvalidArgument(
+          field, "must be positive and finite" + where + " (got " + std::to_string(value) + ")");
+  };
+  if (type != ShapeType::Circle && type != ShapeType::Capsule)
+    throw InvalidArgument("ArticulatedBasePart.type", "must be Circle or Capsule" + where);
+  positive(radius, "ArticulatedBasePart.radius");
+  if (type == ShapeType::Capsule) positive(halfLength, "ArticulatedBasePart.halfLength");
+  positive(mass, "ArticulatedBasePart.mass");
+  requireFinite(position, "ArticulatedBasePart.position");
+  requireFinite(angle, "ArticulatedBasePart.angle");
+}
+
+// --- construction ----------------------------------------------------------------------------
+
+/// Everything computed from the description before any member is built, so that bad input
+/// throws before the agent exists.
+struct ArticulatedAgentBase::Layout {
+  real mass = 0;
+  real inertia = 0;
+  Vector2 centre;  // the base's centre of mass in the description frame
+  std::vector<ArticulatedLink> links;
+  std::vector<real> radii;
+  std::vector<real> angles;
+};
+
+ArticulatedAgentBase::Layout ArticulatedAgentBase::describe(
+    const std::vector<ArticulatedBasePart>& baseParts, const std::vector<ArticulatedLimb>& limbs) {
+  if (baseParts.empty())
+    throw InvalidArgument("ArticulatedAgentBase.baseParts",
+                          "must hold at least one circle or capsule");
+  Layout layout;
+  // The base is rigid: mass, centre of mass and inertia as for a ComposedPhysicalObject (the
+  // parts' own inertias plus the parallel-axis terms).
+  Vector2 weighted;
+  for (std::size_t k = 0; k < baseParts.size(); ++k) {
+    const ArticulatedBasePart& part = baseParts[k];
+    part.validate(k);
+    layout.mass += part.mass;
+    weighted += part.position * part.mass;
+  }
+  layout.centre = weighted / layout.mass;
+  for (const ArticulatedBasePart& part : baseParts) {
+    const real own = part.type == ShapeType::Circle ? part.mass * part.radius * part.radius / 2
+                                                    : CappedRectangle::momentOfInertia(
+                                                          part.halfLength, part.radius, part.mass);
+    layout.inertia += own + part.mass * (part.position - layout.centre).lengthSquared();
+  }
+
+  // The limbs' links, renumbered into one tree: limb after limb, so each limb's parents stay
+  // earlier links and the tree has no loop. Root joints move from the attachment (description
+  // frame) to the base frame, whose origin is the centre of mass.
+  std::size_t total = 0;
+  for (const ArticulatedLimb& limb : limbs) total += static_cast<std::size_t>(limb.linkCount());
+  layout.links.reserve(total);
+  layout.radii.reserve(total);
+  layout.angles.reserve(total);
+  for (const ArticulatedLimb& limb : limbs) {
+    const int offset = static_cast<int>(layout.links.size());
+    for (const ArticulatedLimb::Part& part : limb.parts()) {
+      ArticulatedLink link = part.link;
+      if (link.parent == ArticulatedLink::base) {
+        link.jointPosition = limb.attachment() + link.jointPosition - layout.centre;
+      } else {
+        link.parent += offset;
+      }
+      link.validate(static_cast<int>(layout.links.size()));
+      layout.links.push_back(link);
+      layout.radii.push_back(part.radius);
+      layout.angles.push_back(part.angle);
+    }
+  }
+  return layout;
+}
+
+ArticulatedAgentBase::ArticulatedAgentBase(const std::vector<ArticulatedBasePart>& baseParts,
+                                           const std::vector<ArticulatedLimb>& limbs)
+    : ArticulatedAgentBase(baseParts, describe(baseParts, limbs)) {}
+
+ArticulatedAgentBase::ArticulatedAgentBase(const std::vector<ArticulatedBasePart>& baseParts,
+                                           Layout layout)
+    : MultiBodyObject(layout.mass, layout.inertia),
+      body_(layout.mass, layout.inertia, layout.links),
+      velocities_(static_cast<int>(layout.links.size())),
+      centreOffset_(layout.centre) {
+  const std::size_t n = layout.links.size();
+  jointTorques_.assign(n, 0);
+  servoTargets_.assign(n, 0);
+  servoGains_.assign(n, 0);
+  servoTorques_.assign(n, 0);
+  limitTorques_.assign(n, 0);
+  linkWrenches_.assign(n + 1, Vector3{});
+
+  // The shapes: each knows its body (ArticulatedComponent), and is attached without a fixed
+  // pose (rigid = false): placeShapes() puts it where the kinematics say.
+  baseParts_.reserve(baseParts.size());
+  partPositions_.reserve(baseParts.size());
+  partAngles_.reserve(baseParts.size());
+  for (const ArticulatedBasePart& part : baseParts) {
+    std::unique_ptr<Primitive> shape;
+    if (part.type == ShapeType::Circle)
+      shape = std::make_unique<ArticulatedComponent<Circle>>(base, part.radius, part.mass);
+    else
+      shape = std::make_unique<ArticulatedComponent<CappedRectangle>>(base, part.halfLength,
+                                                                      part.radius, part.mass);
+    const Vector2 local = part.position - centreOffset_;
+    shape->attachTo(*this, local, part.angle, /*rigid=*/false);
+    addPrimitive(*shape);
+    partPositions_.push_back(local);
+    partAngles_.push_back(part.angle);
+    baseParts_.push_back(std::move(shape));
+  }
+  linkShapes_.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    auto shape = std::make_unique<ArticulatedComponent<CappedRectangle>>(
+        static_cast<int>(i), layout.links[i].length / 2, layout.radii[i], layout.links[i].mass);
+    shape->attachTo(*this, {}, 0, /*rigid=*/false);
+    addPrimitive(*shape);
+    linkShapes_.push_back(std::move(shape));
+  }
+
+  // As for a ComposedPhysicalObject, the description frame starts at the world origin, so the
+  // base's centre of mass is at centreOffset_ until the agent is moved.
+  body_.setJointAngles(layout.angles);
+  body_.setBasePose(centreOffset_, 0);
+  placeShapes();
+}
+
+void ArticulatedAgentBase::onRegistered(Simulator& simulator) noexcept {
+  simulator_ = &simulator;
+  // validate() has checked r and alpha: the pose set before registration is taken here.
+  body_.setBasePose(r, alpha);
+  placeShapes();
+}
+
+real ArticulatedAgentBase::timestep() const {
+  return simulator_ != nullptr ? simulator_->timestep() : real(0);
+}
+
+// --- state -----------------------------------------------------------------------------------
+
+void ArticulatedAgentBase::placeShapes() {
+  const real baseAngle = body_.baseAngle();
+  for (std::size_t k = 0; k < baseParts_.size(); ++k) {
+    Primitive& part = *baseParts_[k];
+    part.r = body_.toWorld(base, partPositions_[k]);
+    part.alpha = baseAngle + partAngles_[k];
+  }
+  // Each link's capsule runs from its joint to its tip: its centre is half way along the axis.
+  for (std::size_t i = 0; i < linkShapes_.size(); ++i) {
+    const int link = static_cast<int>(i);
+    CappedRectangle& shape = *linkShapes_[i];
+    shape.r = body_.toWorld(link, {shape.halfLength(), 0});
+    shape.alpha = body_.angle(link);
+  }
+  r = body_.basePosition();
+  alpha = baseAngle;
+}
+
+void ArticulatedAgentBase::setPose(Vector2 position, real angle) {
+  requireFinite(position, "ArticulatedAgentBase.position");
+  requireFinite(angle, "ArticulatedAgentBase.angle");
+  body_.setBasePose(position, angle);
+  placeShapes();
+}
+
+void ArticulatedAgentBase::checkJoint(int i) const {
+  if (i < 0 || i >= linkCount())
+    throw InvalidArgument(
+        "ArticulatedAgentBase.joint",
+        "must be in [0, " + std::to_string(linkCount()) + ") (got " + std::to_string(i) + ")");
+}
+
+void ArticulatedAgentBase::setJointAngle(int i, real q) {
+  checkJoint(i);
+  requireFinite(q, "ArticulatedAgentBase.q");
+  body_.setJointAngle(i, q);
+  placeShapes();
+}
+
+// --- effectors -------------------------------------------------------------------------------
+
+void ArticulatedAgentBase::setJointTorque(int i, real torque) {
+  checkJoint(i);
+  requireFinite(torque, "ArticulatedAgentBase.jointTorque");
+  jointTorques_[index(i)] = torque;
+}
+
+void ArticulatedAgentBase::clearJointTorques() {
+  std::fill(jointTorques_.begin(), jointTorques_.end(), real(0));
+}
+
+void ArticulatedAgentBase::setServoTarget(int i, real target, real gain) {
+  checkJoint(i);
+  requireFinite(target, "ArticulatedAgentBase.servoTarget");
+  requirePositive(gain, "ArticulatedAgentBase.servoGain");
+  servoTargets_[index(i)] = target;
+  servoGains_[index(i)] = gain;
+}
+
+void ArticulatedAgentBase::clearServo(int i) {
+  checkJoint(i);
+  servoGains_[index(i)] = 0;
+}
+
+void ArticulatedAgentBase::applyLinkForce(int b, Vector2 force, Vector2 worldPoint) {
+  if (b < base || b >= linkCount())
+    throw InvalidArgument(
+        "ArticulatedAgentBase.body",
+        "must be in [-1, " + std::to_string(linkCount()) + ") (got " + std::to_string(b) + ")");
+  requireFinite(force, "ArticulatedAgentBase.force");
+  requireFinite(worldPoint, "ArticulatedAgentBase.worldPoint");
+  // A wrench about the body's centre of mass, as ArticulatedBody::solve() takes it.
+  Vector3& wrench = linkWrenches_[index(b + 1)];
+  wrench.x += cross(worldPoint - body_.centerOfMass(b), force);
+  wrench.y += force.x;
+  wrench.z += force.y;
+}
+
+// --- proprioception --------------------------------------------------------------------------
+
+LinkContactInfo ArticulatedAgentBase::linkContact(std::size_t k) const {
+  const ContactInfo& c = contacts[k];
+  return {bodyOf(*c.primitive), c.point, c.normal, c.depth, c.force, c.other, c.otherPrimitive};
+}
+
+real ArticulatedAgentBase::contactForceOn(int b) const {
+  real sum = 0;
+  for (const ContactInfo& c : contacts)
+    if (bodyOf(*c.primitive) == b) sum += c.force;
+  return sum;
+}
+
+// --- collisions, validation, drawing ---------------------------------------------------------
+
+bool ArticulatedAgentBase::selfCollides(const Primitive& a, const Primitive& b) const {
+  const int ba = bodyOf(a);
+  const int bb = bodyOf(b);
+  if (ba == bb) return false;  // the base's parts, which are one rigid body
+  // A joint's two bodies overlap around it by construction (a capsule's cap covers its joint).
+  if (parent(ba) == bb || parent(bb) == ba) return false;
+  // Siblings on one joint point (a fork at a parent's tip) overlap there at every angle.
+  if (ba != base && bb != base && parent(ba) == parent(bb)) {
+    const Vector2 gap = body_.link(ba).jointPosition - body_.link(bb).jointPosition;
+    const real reach = a.radius() + b.radius();
+    if (gap.lengthSquared() < reach * reach) return false;
+  }
+  return true;
+}
+
+void ArticulatedAgentBase::validate() const {
+  MultiBodyObject::validate();
+  if (!(limitMargin >= 0) || !std::isfinite(limitMargin))
+    throw InvalidArgument(typeName() + ".limitMargin", "must be finite and non-negative (got " +
+                                                           std::to_string(limitMargin) + ")");
+  // articulatedBodyOf() relies on every primitive being one of the agent's own components.
+  for (const Primitive* primitive : primitives()) {
+    const bool own =
+        dynamic_cast<const ArticulatedComponent<Circle>*>(primitive) != nullptr ||
+        dynamic_cast<const ArticulatedComponent<CappedRectangle>*>(primitive) != nullptr;
+    if (!own)
+      throw InvalidArgument(typeName() + ".primitives",
+                            "must all be the agent's own shapes (ArticulatedComponent); "
+                            "subclasses must not add primitives");
+  }
+}
+
+void ArticulatedAgentBase::draw(GUI& gui) const {
+  for (const auto& part : baseParts_) part->draw(gui);
+  for (const auto& shape : linkShapes_) shape->draw(gui);
+  // Joints on top, half a link wide, so the tree's structure reads at a glance.
+  for (int i = 0; i < linkCount(); ++i)
+    gui.drawCircle(body_.origin(i), linkShapes_[index(i)]->radius() / 2, body_.angle(i), jointColor,
+                   outlineColor);
+}
+
+}  // namespace thyrix

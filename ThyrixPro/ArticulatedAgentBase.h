@@ -1,0 +1,265 @@
+#pragma once
+/// @file ArticulatedAgentBase.h
+/// @brief An articulated agent as a simulated object: a base of circles and capsules with limbs
+/// of capsule links, its effectors (joint torques, servos, forces on links), proprioception,
+/// joint limits, self-collision rules and drawing; the dynamics are in a subclass.
+
+#include <ThyrixLite/CappedRectangle.h>
+#include <ThyrixLite/Circle.h>
+#include <ThyrixLite/Color.h>
+#include <ThyrixLite/ColorDefinitions.h>
+#include <ThyrixLite/MultiBodyObject.h>
+#include <ThyrixLite/Primitive.h>
+#include <ThyrixLite/ThyrixParameters.h>
+#include <ThyrixLite/Vector2.h>
+#include <ThyrixLite/Vector3.h>
+#include <ThyrixPro/ArticulatedBody.h>
+#include <ThyrixPro/ArticulatedComponent.h>
+#include <ThyrixPro/ArticulatedLimb.h>
+#include <ThyrixPro/LinkContactInfo.h>
+
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace thyrix {
+
+/// One collision shape of an articulated agent's base, a circle or a capsule, placed in the
+/// frame the base is described in (like ComposedPhysicalObject's parts). The base is rigid: its
+/// parts never move relative to each other.
+struct ArticulatedBasePart {
+  ShapeType type = ShapeType::Circle;  ///< Circle or Capsule
+  real radius = 1;                     ///< circle radius, or capsule half width R (m)
+  real halfLength = 0;                 ///< capsule half length l (m); unused for a circle
+  real mass = 1;                       ///< quasistatic mass (N s/m)
+  Vector2 position;                    ///< centre, in the base's description frame (m)
+  real angle = 0;                      ///< capsule axis angle in that frame (rad)
+
+  /// A circle of @p radius and @p mass centred at @p position.
+  static ArticulatedBasePart circle(real radius, real mass, Vector2 position = {});
+  /// A capsule of half length @p halfLength, radius @p radius and @p mass centred at
+  /// @p position, its axis turned by @p angle.
+  static ArticulatedBasePart capsule(real halfLength, real radius, real mass, Vector2 position = {},
+                                     real angle = 0);
+
+  /// Checks the fields of part @p index.
+  /// @throws InvalidArgument naming "ArticulatedBasePart.type" unless Circle or Capsule,
+  /// ".radius", ".mass" (and ".halfLength" for a capsule) unless positive and finite,
+  /// ".position" or ".angle" unless finite
+  void validate(std::size_t index) const;
+};
+
+/// The part of an articulated agent that does not depend on the law of motion: its bodies and
+/// shapes, its effectors and sensors, its joint limits and which of its shapes may collide.
+/// ArticulatedAgentQuasistatic adds the dynamics (the quasistatic articulated-body algorithm);
+/// it is the only one in ThyrixPro, which has no classical (inertial) variant.
+///
+/// **Bodies.** Body -1 (ArticulatedBody::base) is the base, a rigid set of circles and capsules
+/// (ArticulatedBasePart); bodies 0 .. linkCount() - 1 are the links, limb after limb in the
+/// order the limbs are given, each limb's links in its own order (ArticulatedLimb). Each link
+/// is one capsule from its joint to its tip.
+///
+/// **Frames.** The base's parts and the limbs' attachments are described in one frame, as for
+/// a ComposedPhysicalObject; the base's centre of mass sits at centreOfMassOffset() in it. The
+/// agent's `r` is the base's centre of mass (world, m) and `alpha` the base's angle: set them
+/// before registering, or call setPose() at any time. Joint angles are relative to the parent's
+/// axis (ArticulatedLimb), counter-clockwise, in radians, and are not wrapped.
+///
+/// **Effectors**, applied in every step until changed: joint torques (setJointTorque()), and
+/// joint angle servos (setServoTarget()), solved implicitly so that any gain is stable at the
+/// simulator's time step. **Accumulators**, used by the next step and then reset, like a
+/// PhysicalObject's: `externalForce` and `externalTorque` (on the base, at its centre of mass;
+/// applyForce() works as for any body) and applyLinkForce().
+///
+/// **Proprioception:** jointAngle(), jointRate(), the poses and velocities of every body, the
+/// last limit torques, and each contact's body (linkContact()).
+///
+/// **Contacts.** Every shape collides with other objects. Two of the agent's own bodies collide
+/// unless they are neighbours (selfCollides()). The base's parts never collide with each other.
+///
+/// The agent owns its shapes (ArticulatedComponent) and places them itself from the forward
+/// kinematics; subclasses must not add primitives of their own (validate() refuses them).
+class ArticulatedAgentBase : public MultiBodyObject {
+ public:
+  /// The body index of the base.
+  static constexpr int base = ArticulatedBody::base;
+
+  // --- description ---------------------------------------------------------------------------
+
+  /// The number of links (joints).
+  [[nodiscard]] int linkCount() const { return body_.linkCount(); }
+  /// The parent body of body @p b: -1 (the base) for a link on the base; -2 for the base.
+  [[nodiscard]] int parent(int b) const { return body_.parent(b); }
+  /// The articulated body: the tree, its state and the algorithm (read-only).
+  [[nodiscard]] const ArticulatedBody& articulatedBody() const { return body_; }
+  /// The capsule of link @p i: set its colours or tactile sensors here.
+  [[nodiscard]] CappedRectangle& linkShape(int i) const { return *linkShapes_[index(i)]; }
+  /// The number of the base's parts.
+  [[nodiscard]] std::size_t basePartCount() const { return baseParts_.size(); }
+  /// Part @p k of the base, in the order given: a Circle or a CappedRectangle.
+  [[nodiscard]] Primitive& basePart(std::size_t k) const { return *baseParts_[k]; }
+  /// The base's centre of mass in the frame its parts were described in (m).
+  [[nodiscard]] Vector2 centreOfMassOffset() const { return centreOffset_; }
+  /// The agent's body that @p primitive (one of this agent's primitives) belongs to: -1 the
+  /// base, else a link index. O(1).
+  [[nodiscard]] static int bodyOf(const Primitive& primitive) {
+    return articulatedBodyOf(primitive);
+  }
+
+  // --- state ---------------------------------------------------------------------------------
+
+  /// Places the base's centre of mass at @p position with angle @p angle (also `r` and
+  /// `alpha`) and every shape with it; the joint angles are kept.
+  /// @throws InvalidArgument naming "ArticulatedAgentBase.position" or ".angle" unless finite
+  void setPose(Vector2 position, real angle);
+  /// Sets the angle of joint @p i (rad) and places the shapes (a kinematic jump, for set-up).
+  /// @throws InvalidArgument naming "ArticulatedAgentBase.joint" unless @p i is a joint, or
+  /// "ArticulatedAgentBase.q" unless @p q is finite
+  void setJointAngle(int i, real q);
+
+  // --- effectors -----------------------------------------------------------------------------
+
+  /// Sets the torque of joint @p i (N m), held in every step until changed; positive turns
+  /// link i counter-clockwise relative to its parent (and the parent the other way).
+  /// @throws InvalidArgument naming "ArticulatedAgentBase.joint" or ".jointTorque" (not finite)
+  void setJointTorque(int i, real torque);
+  /// The torque set on joint @p i (N m), without the servo's.
+  [[nodiscard]] real jointTorque(int i) const { return jointTorques_[index(i)]; }
+  /// Sets every joint torque to zero.
+  void clearJointTorques();
+
+  /// Drives joint @p i toward the angle @p target (rad) with the stiffness @p gain (N m/rad):
+  /// the servo adds the torque `gain (target - q - dt qdot)` with `qdot` this step's final rate,
+  /// solved implicitly (a joint damping `gain dt` in the articulated-body algorithm), so it is
+  /// stable and does not overshoot for any gain. Held until clearServo().
+  /// @throws InvalidArgument naming "ArticulatedAgentBase.joint", ".servoTarget" (not finite)
+  /// or ".servoGain" (not positive and finite)
+  void setServoTarget(int i, real target, real gain);
+  /// Switches off the servo of joint @p i. @throws InvalidArgument naming
+  /// "ArticulatedAgentBase.joint"
+  void clearServo(int i);
+  /// Whether joint @p i has a servo.
+  [[nodiscard]] bool hasServo(int i) const { return servoGains_[index(i)] > 0; }
+  /// The servo target of joint @p i (rad); meaningful when hasServo().
+  [[nodiscard]] real servoTarget(int i) const { return servoTargets_[index(i)]; }
+  /// The servo gain of joint @p i (N m/rad), 0 without a servo.
+  [[nodiscard]] real servoGain(int i) const { return servoGains_[index(i)]; }
+  /// The torque the servo of joint @p i applied in the last step (N m), with the final rate:
+  /// `gain (target - q - dt qdot)`, q the angle at the start of the step; 0 without a servo.
+  [[nodiscard]] real servoTorque(int i) const { return servoTorques_[index(i)]; }
+
+  /// Adds the world force @p force (N) applied at the world point @p worldPoint on body @p b
+  /// (-1 the base, else a link) for the next step; reset after it, like `externalForce`.
+  /// @throws InvalidArgument naming "ArticulatedAgentBase.body" unless a body of this agent,
+  /// or ".force" / ".worldPoint" unless finite
+  void applyLinkForce(int b, Vector2 force, Vector2 worldPoint);
+
+  // --- proprioception and poses --------------------------------------------------------------
+
+  /// The angle of joint @p i (rad), not wrapped.
+  [[nodiscard]] real jointAngle(int i) const { return body_.jointAngle(i); }
+  /// All joint angles (rad).
+  [[nodiscard]] std::span<const real> jointAngles() const { return body_.jointAngles(); }
+  /// The rate of joint @p i in the last step (rad/s), contact forces and limits included.
+  [[nodiscard]] real jointRate(int i) const { return velocities_.jointRate(i); }
+  /// The world position of the joint of link @p i (m).
+  [[nodiscard]] Vector2 jointPosition(int i) const { return body_.origin(i); }
+  /// The world position of the tip of link @p i (m).
+  [[nodiscard]] Vector2 linkTip(int i) const { return body_.tip(i); }
+  /// The world position of body @p b's centre of mass (m).
+  [[nodiscard]] Vector2 centerOfMass(int b) const { return body_.centerOfMass(b); }
+  /// The world angle of body @p b's axis (rad): the base's angle, or a link's direction.
+  [[nodiscard]] real bodyAngle(int b) const { return body_.angle(b); }
+  /// The velocity of body @p b's centre of mass in the last step (m/s).
+  [[nodiscard]] Vector2 bodyVelocity(int b) const { return velocities_.linearVelocity(b); }
+  /// The angular velocity of body @p b in the last step (rad/s).
+  [[nodiscard]] real bodyAngularVelocity(int b) const { return velocities_.angularVelocity(b); }
+  /// The velocity of the material point of body @p b at the world point @p point in the last
+  /// step (m/s).
+  [[nodiscard]] Vector2 pointVelocity(int b, Vector2 point) const {
+    return body_.pointVelocity(velocities_, b, point);
+  }
+  /// The torque the limits of joint @p i applied in the last step (N m): positive at the lower
+  /// limit, negative at the upper, zero when neither acted. Its magnitude is the limit's LCP
+  /// multiplier, never negative.
+  [[nodiscard]] real limitTorque(int i) const { return limitTorques_[index(i)]; }
+
+  /// Contact @p k of this step's `contacts`, with the body it touches.
+  [[nodiscard]] LinkContactInfo linkContact(std::size_t k) const;
+  /// The sum of the magnitudes of this step's contact forces on body @p b (N).
+  [[nodiscard]] real contactForceOn(int b) const;
+
+  // --- joint limits --------------------------------------------------------------------------
+
+  /// A joint gets its limit's constraint (a row of the contact LCP) when it could reach the
+  /// limit this step, turning at its free rate or at its last step's rate, plus this margin
+  /// (rad): a speculative limit, like a speculative contact, so that contact forces acting in
+  /// the same step cannot push it across. 0.05 rad by default.
+  real limitMargin = real(0.05);
+
+  // --- MultiBodyObject and PhysicalObject ----------------------------------------------------
+
+  /// False for two shapes of the same body, for a link and its parent (the base included), and
+  /// for two links on the same parent whose joints are closer than the sum of their radii (they
+  /// overlap around the shared joint whatever their angles); true otherwise, e.g. for a
+  /// folded chain touching itself or a leg touching the base it is not attached to.
+  [[nodiscard]] bool selfCollides(const Primitive& a, const Primitive& b) const override;
+  /// Also checks limitMargin (finite, non-negative) and that every primitive is the agent's own
+  /// (an ArticulatedComponent).
+  void validate() const override;
+  /// Draws the base's parts and the links' capsules, then each joint as a small circle.
+  void draw(GUI& gui) const override;
+  [[nodiscard]] std::string typeName() const override { return "ArticulatedAgentBase"; }
+
+  /// Fill colour of the joints' circles.
+  Color jointColor = colors::yellow;
+
+ protected:
+  /// An agent whose base is made of @p baseParts (at least one) and which carries @p limbs.
+  /// @throws InvalidArgument naming "ArticulatedAgentBase.baseParts" when empty, the first bad
+  /// field of a part (ArticulatedBasePart::validate()), or of a link (ArticulatedLink)
+  ArticulatedAgentBase(const std::vector<ArticulatedBasePart>& baseParts,
+                       const std::vector<ArticulatedLimb>& limbs);
+
+  /// Keeps the simulator (for its time step) and places the shapes at `r`, `alpha`.
+  void onRegistered(Simulator& simulator) noexcept override;
+
+  /// The time step of the simulator the agent is registered with (s), 0 before registration.
+  [[nodiscard]] real timestep() const;
+  /// Places every shape from the articulated body's forward kinematics and copies the base's
+  /// pose to `r` and `alpha`.
+  void placeShapes();
+  /// `i` as an index, for the per-joint arrays.
+  [[nodiscard]] static std::size_t index(int i) { return static_cast<std::size_t>(i); }
+  /// Throws InvalidArgument naming "ArticulatedAgentBase.joint" unless @p i is a joint.
+  void checkJoint(int i) const;
+
+  ArticulatedBody body_;  ///< the tree, its state and the algorithm
+  /// The velocities of the last step (those without contacts until the contacts are solved).
+  ArticulatedBody::Output velocities_;
+  std::vector<real> jointTorques_;  ///< the effector torques, per joint (N m)
+  std::vector<real> servoTargets_;  ///< per joint (rad)
+  std::vector<real> servoGains_;    ///< per joint (N m/rad), 0: no servo
+  std::vector<real> servoTorques_;  ///< the servo torques of the last step (N m)
+  std::vector<real> limitTorques_;  ///< the limit torques of the last step (N m)
+  /// The wrenches of applyLinkForce() per body, base first (body b at b + 1), about each centre
+  /// of mass: `(torque, fx, fy)`.
+  std::vector<Vector3> linkWrenches_;
+
+ private:
+  struct Layout;
+  ArticulatedAgentBase(const std::vector<ArticulatedBasePart>& baseParts, Layout layout);
+  static Layout describe(const std::vector<ArticulatedBasePart>& baseParts,
+                         const std::vector<ArticulatedLimb>& limbs);
+
+  std::vector<std::unique_ptr<Primitive>> baseParts_;
+  std::vector<Vector2> partPositions_;  ///< each base part's centre relative to the centre of mass
+  std::vector<real> partAngles_;        ///< each base part's angle in the base frame
+  std::vector<std::unique_ptr<ArticulatedComponent<CappedRectangle>>> linkShapes_;
+  Vector2 centreOffset_;
+  const Simulator* simulator_ = nullptr;
+};
+
+}  // namespace thyrix

@@ -1,0 +1,140 @@
+#include <ThyrixPro/ArticulatedAgentQuasistatic.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace thyrix {
+
+ArticulatedAgentQuasistatic::ArticulatedAgentQuasistatic(
+    const std::vector<ArticulatedBasePart>& baseParts, const std::vector<ArticulatedLimb>& limbs)
+    : ArticulatedAgentBase(baseParts, limbs),
+      free_(linkCount()),
+      response_(linkCount()),
+      torques_(index(linkCount()), 0),
+      lastRates_(index(linkCount()), 0),
+      wrenches_(index(linkCount()) + 1, Vector3{}) {
+  // Room for a few constraints per body; more only grows the buffer to the largest count seen.
+  tests_.reserve(index(2 * linkCount() + 8));
+}
+
+void ArticulatedAgentQuasistatic::computeDerivativesWithoutContacts() {
+  // `r` and `alpha` are public: follow a move made by hand (the contacts of this step were
+  // found at the old place; the next step's are right).
+  if ((r != body_.basePosition() || alpha != body_.baseAngle()) && std::isfinite(r.x) &&
+      std::isfinite(r.y) && std::isfinite(alpha))
+    setPose(r, alpha);
+  body_.setBaseFixed(fixed);
+
+  // The servo tau = k (q* - q - dt qdot) with the step's final qdot, solved implicitly: the
+  // damping c = k dt joins d_i in the articulated-body algorithm (ArticulatedBody), and
+  // k (q* - q) is an ordinary torque. The joint's equation becomes (d + k dt) qdot = k (q* - q)
+  // + ..., which cannot overshoot, whatever k (ALGORITHMS.md section 2, pitfalls).
+  const real dt = timestep();
+  for (int i = 0; i < linkCount(); ++i) {
+    const std::size_t j = index(i);
+    const real gain = servoGains_[j];
+    body_.setJointDamping(i, gain * dt);
+    torques_[j] = jointTorques_[j];
+    if (gain > 0) torques_[j] += gain * (servoTargets_[j] - body_.jointAngle(i));
+  }
+  // The base's force acts at its centre of mass, as for any PhysicalObject (applyForce() has put
+  // the moment of an off-centre force in externalTorque).
+  std::copy(linkWrenches_.begin(), linkWrenches_.end(), wrenches_.begin());
+  wrenches_[0] += Vector3{externalTorque, externalForce.x, externalForce.y};
+  body_.solve(torques_, wrenches_, free_);
+
+  // Until the contact solver says otherwise (it leaves an agent without constraints alone),
+  // the final velocities are the free ones. The last step's rates are kept for the limits.
+  std::copy(velocities_.jointRates.begin(), velocities_.jointRates.end(), lastRates_.begin());
+  std::copy(free_.velocities.begin(), free_.velocities.end(), velocities_.velocities.begin());
+  std::copy(free_.jointRates.begin(), free_.jointRates.end(), velocities_.jointRates.begin());
+  v = velocities_.linearVelocity(base);
+  omega = velocities_.angularVelocity(base);
+
+  externalForce = {};
+  externalTorque = 0;
+  std::fill(linkWrenches_.begin(), linkWrenches_.end(), Vector3{});
+  std::fill(limitTorques_.begin(), limitTorques_.end(), real(0));
+}
+
+ArticulatedBody::TestForce ArticulatedAgentQuasistatic::toTestForce(const UnitForce& force) const {
+  if (force.primitive == nullptr)
+    return ArticulatedBody::TestForce::onJoint(force.joint, force.torque);
+  return ArticulatedBody::TestForce::atPoint(bodyOf(*force.primitive), force.point,
+                                             force.direction);
+}
+
+void ArticulatedAgentQuasistatic::convert(std::span<const UnitForce> forces) {
+  tests_.clear();
+  for (const UnitForce& force : forces) tests_.push_back(toTestForce(force));
+}
+
+real ArticulatedAgentQuasistatic::velocityAlong(const UnitForce& force) const {
+  return body_.velocityAlong(free_, toTestForce(force));
+}
+
+void ArticulatedAgentQuasistatic::responseMatrix(std::span<const UnitForce> forces,
+                                                 std::span<real> matrix) {
+  convert(forces);
+  const std::size_t n = tests_.size();
+  // Column j: the response to unit force j alone, read by every constraint (Kokkevis). The
+  // articulated inertias are computed once (by the first respond()) and reused for every column.
+  for (std::size_t j = 0; j < n; ++j) {
+    body_.respond(tests_[j], response_);
+    for (std::size_t i = 0; i < n; ++i)
+      matrix[i * n + j] = body_.velocityAlong(response_, tests_[i]);
+  }
+  // K = J (J^T D J)^-1 J^T is symmetric; the columns agree with the rows only to round-off.
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const real mean = (matrix[i * n + j] + matrix[j * n + i]) / 2;
+      matrix[i * n + j] = mean;
+      matrix[j * n + i] = mean;
+    }
+}
+
+void ArticulatedAgentQuasistatic::applyConstraintForces(std::span<const UnitForce> forces,
+                                                        std::span<const real> magnitudes) {
+  convert(forces);
+  // The responses are linear in the forces: one pass with every force scaled gives their sum.
+  body_.respond(tests_, magnitudes, response_);
+  std::copy(free_.velocities.begin(), free_.velocities.end(), velocities_.velocities.begin());
+  std::copy(free_.jointRates.begin(), free_.jointRates.end(), velocities_.jointRates.begin());
+  velocities_.addScaled(response_, 1);
+  v = velocities_.linearVelocity(base);
+  omega = velocities_.angularVelocity(base);
+  for (std::size_t k = 0; k < forces.size(); ++k)
+    if (forces[k].primitive == nullptr)
+      limitTorques_[index(forces[k].joint)] += forces[k].torque * magnitudes[k];
+}
+
+void ArticulatedAgentQuasistatic::collectInternalConstraints(real dt,
+                                                             std::vector<InternalConstraint>& out) {
+  for (int i = 0; i < linkCount(); ++i) {
+    const ArticulatedLink& link = body_.link(i);
+    if (!link.hasLimits) continue;
+    const real q = body_.jointAngle(i);
+    // How far the joint may turn this step toward each limit: by its free rate, or by its last
+    // step's rate (contacts may keep driving it, and their forces are not known yet), plus the
+    // margin. A row that turns out not to be needed costs one LCP row and gets no torque.
+    const real freeRate = free_.jointRate(i);
+    const real lastRate = lastRates_[index(i)];
+    const real down = dt * std::max({real(0), -freeRate, -lastRate}) + limitMargin;
+    const real up = dt * std::max({real(0), freeRate, lastRate}) + limitMargin;
+    if (q - link.qMin <= down) out.push_back({{nullptr, {}, {}, i, 1}, (link.qMin - q) / dt});
+    if (link.qMax - q <= up) out.push_back({{nullptr, {}, {}, i, -1}, (q - link.qMax) / dt});
+  }
+}
+
+void ArticulatedAgentQuasistatic::integrate(real dt) {
+  // The servos' torques with the final rates, for proprioception, before q moves.
+  for (int i = 0; i < linkCount(); ++i) {
+    const std::size_t j = index(i);
+    servoTorques_[j] =
+        servoGains_[j] * (servoTargets_[j] - body_.jointAngle(i) - dt * velocities_.jointRate(i));
+  }
+  body_.integrate(velocities_, dt);  // a fixed base stays put
+  placeShapes();
+}
+
+}  // namespace thyrix
