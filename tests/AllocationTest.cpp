@@ -1,27 +1,17 @@
-// A warmed-up simulator allocates nothing per step. This executable replaces the global
-// operator new to count allocations; the count is read around the steps under test only.
+// A warmed-up simulator allocates nothing per step. This executable links
+// support/AllocationCounter.cpp to count allocations; the count is read around the steps under test
+// only.
+
+#include "support/AllocationCounter.h"
 
 #include <Scenes.h>
 #include <ThyrixLite/Simulator.h>
 
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cstdlib>
 #include <new>
 #include <vector>
-
-namespace {
-std::atomic<long> allocationCount{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  allocationCount.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace thyrix {
 namespace {
@@ -41,19 +31,19 @@ TEST_P(AllocationTest, PileOf2000CirclesStepsWithoutAllocating) {
     simulator.advanceTime();
   }
   ASSERT_GT(simulator.contacts.size(), 1500u) << "the pile should be in contact";
-  const long before = allocationCount.load();
+  const long before = test::allocationCount();
   for (int step = 0; step < 100; ++step) {
     scenes::push(circles, {0, -1});
     simulator.advanceTime();
   }
-  EXPECT_EQ(allocationCount.load() - before, 0);
+  EXPECT_EQ(test::allocationCount() - before, 0);
 }
 
 TEST(AllocationCounter, CountsAllocations) {
-  const long before = allocationCount.load();
+  const long before = test::allocationCount();
   std::vector<int> grown;
   grown.reserve(static_cast<std::size_t>(::testing::UnitTest::GetInstance()->random_seed()) + 10);
-  EXPECT_EQ(allocationCount.load() - before, 1);
+  EXPECT_EQ(test::allocationCount() - before, 1);
 }
 
 INSTANTIATE_TEST_SUITE_P(BothSolvers, AllocationTest,

@@ -4,9 +4,10 @@
 // between Baraff and Gauss-Seidel, implicit servos, determinism, validation and no allocation
 // per step.
 //
-// This executable replaces the global operator new to count allocations during steps.
+// This executable links support/AllocationCounter.cpp to count allocations during steps.
 
 #include "TestTolerances.h"
+#include "support/AllocationCounter.h"
 
 #include <Scenes.h>
 #include <ThyrixLite/Border.h>
@@ -22,7 +23,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -32,18 +32,6 @@
 #include <new>
 #include <string>
 #include <vector>
-
-namespace {
-std::atomic<long> allocationCount{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  allocationCount.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace thyrix {
 namespace {
@@ -643,12 +631,12 @@ TEST_P(ArticulatedAgentTest, StepsAllocateNothingAfterWarmUp) {
   ASSERT_GT(agent.contactForceOn(-1), real(0.1)) << "the base presses on the ball and floor";
   ASSERT_GT(agent.contactForceOn(1) + agent.contactForceOn(2), 0) << "the chain on the floor";
   ASSERT_LT(agent.limitTorque(1), 0) << "the middle joint on its upper limit";
-  const long before = allocationCount.load();
+  const long before = test::allocationCount();
   for (int step = 0; step < 100; ++step) {
     drive();
     simulator.advanceTime();
   }
-  EXPECT_EQ(allocationCount.load() - before, 0);
+  EXPECT_EQ(test::allocationCount() - before, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(BothSolvers, ArticulatedAgentTest,

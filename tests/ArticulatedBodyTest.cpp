@@ -6,10 +6,11 @@
 // hand, zero input giving exactly zero motion, Kokkevis test forces against solve() and the
 // constraint matrix K against J_c (J^T D J)^-1 J_c^T, validation, and no allocation.
 //
-// This executable replaces the global operator new to count allocations around solve() and
+// This executable links support/AllocationCounter.cpp to count allocations around solve() and
 // respond().
 
 #include "TestTolerances.h"
+#include "support/AllocationCounter.h"
 
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixPro/ArticulatedBody.h>
@@ -20,7 +21,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -28,18 +28,6 @@
 #include <numbers>
 #include <string>
 #include <vector>
-
-namespace {
-std::atomic<long> allocationCount{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  allocationCount.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace thyrix {
 namespace {
@@ -892,7 +880,7 @@ TEST(ArticulatedBodyTest, SolveAndRespondDoNotAllocate) {
   ArticulatedBody body = p.build();
   ArticulatedBody::Output out = body.makeOutput();
   const auto forces = randomConstraints(body, 8, 1);
-  const long before = allocationCount.load();
+  const long before = test::allocationCount();
   for (int step = 0; step < 10; ++step) {
     body.setJointAngle(step % 50, real(0.1) * real(step));
     body.setBasePose({real(step), 0}, real(0.01) * real(step));
@@ -904,7 +892,7 @@ TEST(ArticulatedBodyTest, SolveAndRespondDoNotAllocate) {
     body.respond(forces, {}, out);
     body.integrate(out, real(0.01));
   }
-  EXPECT_EQ(allocationCount.load() - before, 0);
+  EXPECT_EQ(test::allocationCount() - before, 0);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -1,13 +1,14 @@
 // Broad phase: the grid must find exactly the pairs that an all-pairs check finds, each once
 // with first < second, deterministically and without allocating once warmed up.
 
+#include "support/AllocationCounter.h"
+
 #include <ThyrixLite/BroadPhase.h>
 #include <Tools/MTRandom.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -15,29 +16,6 @@
 #include <new>
 #include <utility>
 #include <vector>
-
-// Counts every allocation of this test program, to check that a warmed-up broad phase
-// allocates nothing. (Array and nothrow forms default to these.)
-namespace {
-std::atomic<long> allocations{0};
-}  // namespace
-
-// GCC inlines these into std::allocator and then mistakes the malloc/free pair for a
-// new/free mismatch.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-void* operator new(std::size_t size) {
-  allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
 
 namespace thyrix {
 namespace {
@@ -276,29 +254,29 @@ TEST(BroadPhase, WarmedUpCallsReuseTheirBuffers) {
   const std::vector<BoundingBox> small(large.begin(), large.begin() + 300);
   BroadPhase broadPhase;
   std::vector<BoxPair> pairs;
-  long before = allocations.load();
+  long before = test::allocationCount();
   broadPhase.findPairs(large, pairs);  // warms up every buffer
-  const long warmUp = allocations.load() - before;
+  const long warmUp = test::allocationCount() - before;
   EXPECT_GT(warmUp, 0);  // the counter does see the broad phase's allocations
   const BoxPair* const data = pairs.data();
 
-  before = allocations.load();
+  before = test::allocationCount();
   broadPhase.findPairs(large, pairs);
-  const long again = allocations.load() - before;
+  const long again = test::allocationCount() - before;
   EXPECT_EQ(again, 0);
   EXPECT_EQ(pairs.data(), data);
   expectSameAsBruteForce(large, pairs);
 
-  before = allocations.load();
+  before = test::allocationCount();
   broadPhase.findPairs(small, pairs);
-  const long smaller = allocations.load() - before;
+  const long smaller = test::allocationCount() - before;
   EXPECT_EQ(smaller, 0);
   EXPECT_EQ(pairs.data(), data);
   expectSameAsBruteForce(small, pairs);  // nothing stale from the larger call
 
-  before = allocations.load();
+  before = test::allocationCount();
   broadPhase.findPairs(large, pairs);
-  const long back = allocations.load() - before;
+  const long back = test::allocationCount() - before;
   EXPECT_EQ(back, 0);
   expectSameAsBruteForce(large, pairs);
 }

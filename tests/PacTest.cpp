@@ -1,8 +1,9 @@
 // Pac: its sensor and effector layout, its shape, and eating as the users' guide describes it.
-// This executable replaces the global operator new to count allocations (as AllocationTest
+// This executable links support/AllocationCounter.cpp to count allocations (as AllocationTest
 // does); the count is read around the steps under test only.
 
 #include "TestTolerances.h"
+#include "support/AllocationCounter.h"
 
 #include <Controller/RandomController.h>
 #include <PacEater.h>
@@ -16,22 +17,9 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <new>
-
-namespace {
-std::atomic<long> allocationCount{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  allocationCount.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace thyrix {
 namespace {
@@ -333,17 +321,17 @@ TEST(Pac, BadParametersAreRefusedNamingTheField) {
 }
 
 TEST(Pac, StepsWithoutAllocatingOnceWarmedUp) {
-  const long start = allocationCount.load();
+  const long start = test::allocationCount();
   PacSimulator::Options options;
   options.seed = 3;
   PacSimulator simulator(options, std::make_unique<RandomController>(3),
                          std::make_unique<RandomController>(4));
   simulator.reserveContacts(200);
   for (int step = 0; step < 100; ++step) simulator.advanceTime();
-  const long before = allocationCount.load();
+  const long before = test::allocationCount();
   ASSERT_GT(before, start) << "building the world allocates: the counter counts";
   for (int step = 0; step < 5000; ++step) simulator.advanceTime();  // mouths open and close
-  EXPECT_EQ(allocationCount.load() - before, 0);
+  EXPECT_EQ(test::allocationCount() - before, 0);
 }
 
 TEST(Pac, SameSeedSameTrajectory) {

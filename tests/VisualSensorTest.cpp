@@ -1,7 +1,7 @@
 // The visual sensor against hand-computed arcs (a disk of radius R at distance d subtends
 // 2 asin(R / d)) and against an independent ray-casting reference; its culling, its exclusions
 // (own body, borders), the eye inside or touching an object, following the body, validation,
-// and no allocation once warmed up. This executable replaces the global operator new to count
+// and no allocation once warmed up. This executable links support/AllocationCounter.cpp to count
 // allocations (as AllocationTest does).
 
 #include <ThyrixLite/Border.h>
@@ -16,9 +16,9 @@
 #include <scenes/Scenes.h>
 
 #include "TestTolerances.h"
+#include "support/AllocationCounter.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -26,23 +26,6 @@
 #include <new>
 #include <string>
 #include <vector>
-
-// The replaced global operator new/delete (malloc/free) look mismatched to GCC when inlined.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-
-namespace {
-std::atomic<long> allocationCount{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  allocationCount.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace thyrix {
 namespace {
@@ -542,19 +525,19 @@ TEST_F(VisualSensorTest, UpdateAllocatesNothingAfterTheFirstCall) {
   }
   VisualSensor sensor(*circles[0], {real(0.2), 0}, 0, 14, real(0.15));
   sensor.update(world.objects);
-  const long before = allocationCount.load();
+  const long before = test::allocationCount();
   for (int i = 0; i < 100; ++i) {
     circles[0]->alpha = real(0.0628) * static_cast<real>(i);  // looks all around
     sensor.update(world.objects);
   }
-  EXPECT_EQ(allocationCount.load() - before, 0);
+  EXPECT_EQ(test::allocationCount() - before, 0);
 }
 
 TEST(VisualSensorAllocationCounter, CountsAllocations) {
-  const long before = allocationCount.load();
+  const long before = test::allocationCount();
   std::vector<int> grown;
   grown.reserve(static_cast<std::size_t>(::testing::UnitTest::GetInstance()->random_seed()) + 10);
-  EXPECT_EQ(allocationCount.load() - before, 1);
+  EXPECT_EQ(test::allocationCount() - before, 1);
 }
 
 }  // namespace

@@ -1,0 +1,39 @@
+// The replaced global operator new and delete of test programs that count allocations. Each
+// block carries its size in a header, so live bytes can be counted without the sized delete.
+
+#include "AllocationCounter.h"
+
+#include <atomic>
+#include <cstddef>
+#include <cstdlib>
+#include <new>
+
+namespace {
+std::atomic<long> allocations{0};
+std::atomic<long> bytes{0};
+constexpr std::size_t header = alignof(std::max_align_t);
+}  // namespace
+
+void* operator new(std::size_t size) {
+  auto* block = static_cast<unsigned char*>(std::malloc(size + header));
+  if (block == nullptr) throw std::bad_alloc();
+  *reinterpret_cast<std::size_t*>(block) = size;
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  bytes.fetch_add(static_cast<long>(size), std::memory_order_relaxed);
+  return block + header;
+}
+
+void operator delete(void* p) noexcept {
+  if (p == nullptr) return;
+  auto* block = static_cast<unsigned char*>(p) - header;
+  bytes.fetch_sub(static_cast<long>(*reinterpret_cast<std::size_t*>(block)),
+                  std::memory_order_relaxed);
+  std::free(block);
+}
+
+void operator delete(void* p, std::size_t) noexcept { operator delete(p); }
+
+namespace thyrix::test {
+long allocationCount() { return allocations.load(std::memory_order_relaxed); }
+long liveHeapBytes() { return bytes.load(std::memory_order_relaxed); }
+}  // namespace thyrix::test
