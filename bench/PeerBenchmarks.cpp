@@ -176,11 +176,11 @@ void pile(benchmark::State& state, const Config& config, int count, Args... args
   state.counters["bodies"] = count;
 }
 
-template <class Scene>
-void chain(benchmark::State& state, const Config& config, int links) {
+template <class Scene, class... Args>
+void chain(benchmark::State& state, const Config& config, int links, Args... args) {
   const ChainLayout layout = chainLayout(links);
   for (auto _ : state) {
-    Scene scene(layout);
+    Scene scene(layout, args...);
     double largest = 0;
     const Measure m = run(scene, config.chainSteps, config.chainSampleEvery, [&](const Scene& s) {
       largest = std::max(largest, s.largestJointGap());
@@ -328,10 +328,12 @@ void registerAll(const Config& config) {
 #endif
   }
 
-  // The chains in Thyrix need ThyrixPro's articulated bodies inside the Simulator, which do
-  // not exist yet: only the peers run them for now.
-  for ([[maybe_unused]] const int links : {10, 100, 1000}) {
-    [[maybe_unused]] const std::string scene = "chain" + std::to_string(links);
+  for (const int links : {10, 100, 1000}) {
+    const std::string scene = "chain" + std::to_string(links);
+    add(scene + "/thyrix",
+        [=](benchmark::State& s) { chain<ThyrixChain>(s, config, links, baraff); });
+    add(scene + "/thyrix_gs",
+        [=](benchmark::State& s) { chain<ThyrixChain>(s, config, links, gaussSeidel); });
 #ifdef THYRIX_HAVE_BOX2D
     add(scene + "/box2d", [=](benchmark::State& s) { chain<Box2DChain>(s, config, links); });
 #endif

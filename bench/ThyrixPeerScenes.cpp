@@ -3,7 +3,11 @@
 #include <Scenes.h>
 #include <ThyrixLite/Border.h>
 #include <ThyrixLite/Elastoid.h>
+#include <ThyrixPro/ArticulatedLimb.h>
+#include <ThyrixPro/ArticulatedLink.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 namespace thyrix::peers {
@@ -74,6 +78,66 @@ std::vector<Point> ThyrixPile::centres() const {
   for (const Circle* circle : circles_)
     result.push_back({static_cast<double>(circle->r.x), static_cast<double>(circle->r.y)});
   return result;
+}
+
+ThyrixChain::ThyrixChain(const ChainLayout& layout, ContactSolverKind solver)
+    : layout_(layout), simulator_(static_cast<real>(layout.timestep)) {
+  simulator_.setContactSolver(solver);
+  const real halfLength = static_cast<real>(layout.halfLength);
+  const real radius = static_cast<real>(layout.radius);
+  ArticulatedLimb limb(Vector2{});
+  for (int i = 0; i < layout.links; ++i) {
+    // Link i's joint is on the base's centre (the origin) for the first, else on the previous
+    // link's tip.
+    const Vector2 joint = i == 0 ? Vector2{} : Vector2{2 * halfLength, 0};
+    ArticulatedLink link =
+        ArticulatedLink::capsule(i - 1, joint, halfLength, radius, static_cast<real>(thyrixMass));
+    // The peers' moment of inertia (a box of the capsule's full size, ChainLayout::inertia())
+    // times the damping, rather than the capsule's own: a turning link then meets the same
+    // resistance as a peer link with angular damping peerDamping.
+    link.inertia = static_cast<real>(peerDamping * layout.inertia());
+    limb.addLink(link, radius);
+  }
+  // The base only carries the pin: a tiny circle, so small that no link can touch it except
+  // the first, which never collides with its parent.
+  auto agent = std::make_unique<ArticulatedAgentQuasistatic>(
+      std::vector<ArticulatedBasePart>{ArticulatedBasePart::circle(real(1e-3), 1)},
+      std::vector<ArticulatedLimb>{limb});
+  agent->setPose(Vector2{}, 0);
+  agent->fixed = true;
+  agent_ = &simulator_.registerObject(std::move(agent));
+}
+
+void ThyrixChain::step() {
+  const Vector2 weight{0, -static_cast<real>(peerMass * layout_.gravity)};
+  for (int i = 0; i < layout_.links; ++i)
+    agent_->applyLinkForce(i, weight, agent_->centerOfMass(i));
+  simulator_.advanceTime();
+}
+
+std::uint64_t ThyrixChain::stateHash() const {
+  StateHash hash;
+  for (int i = 0; i < layout_.links; ++i) {
+    const Vector2 c = agent_->centerOfMass(i);
+    const Vector2 v = agent_->bodyVelocity(i);
+    hash.mix(c.x);
+    hash.mix(c.y);
+    hash.mix(agent_->bodyAngle(i));
+    hash.mix(v.x);
+    hash.mix(v.y);
+    hash.mix(agent_->bodyAngularVelocity(i));
+  }
+  return hash.value();
+}
+
+double ThyrixChain::largestJointGap() const {
+  const auto distance = [](Vector2 a, Vector2 b) {
+    return std::hypot(static_cast<double>(a.x - b.x), static_cast<double>(a.y - b.y));
+  };
+  double gap = distance(agent_->jointPosition(0), vector(layout_.joint(0)));
+  for (int i = 1; i < layout_.links; ++i)
+    gap = std::max(gap, distance(agent_->linkTip(i - 1), agent_->jointPosition(i)));
+  return gap;
 }
 
 }  // namespace thyrix::peers

@@ -1,12 +1,13 @@
 #pragma once
 /// @file ThyrixPeerScenes.h
-/// @brief The Thyrix side of the peer comparison: the arena and the pile built from the shared
-/// layouts of PeerScenes.h. (The chains wait for ThyrixPro's integration with the simulator.)
+/// @brief The Thyrix side of the peer comparison: the arena, the pile and the chain built from
+/// the shared layouts of PeerScenes.h (the chain with ThyrixPro's articulated agent).
 
 #include "PeerScenes.h"
 
 #include <ThyrixLite/Circle.h>
 #include <ThyrixLite/Simulator.h>
+#include <ThyrixPro/ArticulatedAgentQuasistatic.h>
 
 #include <cstdint>
 #include <vector>
@@ -53,6 +54,34 @@ class ThyrixPile {
   PileLayout layout_;
   Simulator simulator_;
   std::vector<Circle*> circles_;
+};
+
+/// chainN in Thyrix: an ArticulatedAgentQuasistatic with a fixed base (one tiny circle at the
+/// origin, the peers' pin) and one limb, a chain of N capsule links of length 2 halfLength (a
+/// link's capsule runs from its joint to its tip, the peers' cap centres), so the joints sit at
+/// integer x as in the peers. Neighbours do not collide by construction (a link never touches
+/// its parent); other pairs collide, as in the peers. Each link has the quasistatic mass
+/// thyrixMass and peerDamping times the peers' moment of inertia, and is pulled down each step
+/// by its peer's weight (peerMass g) at its centre of mass, so it moves and turns as a peer link
+/// damped by peerDamping would.
+class ThyrixChain {
+ public:
+  ThyrixChain(const ChainLayout& layout, ContactSolverKind solver);
+  /// Applies the weights, then advances the world by one step.
+  void step();
+  [[nodiscard]] std::size_t contactCount() const { return simulator_.contacts.size(); }
+  /// FNV-1a over every link's centre of mass, angle, velocity and angular velocity (the base is
+  /// fixed, and the agent's `r` is the base's: scenes::stateHash would not see the links).
+  [[nodiscard]] std::uint64_t stateHash() const;
+  /// The largest joint gap (m): the distance from each link's tip to the next link's joint,
+  /// and from the first joint to the pin at the origin. Zero by construction (the joints are
+  /// placed by forward kinematics), measured anyway like the peers'.
+  [[nodiscard]] double largestJointGap() const;
+
+ private:
+  ChainLayout layout_;
+  Simulator simulator_;
+  ArticulatedAgentQuasistatic* agent_ = nullptr;
 };
 
 }  // namespace thyrix::peers
