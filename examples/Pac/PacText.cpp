@@ -5,12 +5,10 @@
 #include "PacEater.h"
 #include "PacSimulator.h"
 
+#include <CommandLine.h>
 #include <Controller/RandomController.h>
-#include <ThyrixLite/SvgGUI.h>
-#include <ThyrixLite/WorldDrawing.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
@@ -22,78 +20,38 @@
 namespace {
 
 struct Options {
-  long steps = 1000;
-  std::uint32_t seed = 1;
+  thyrix::examples::ConsoleOptions console;
   int food = 16;
-  long every = 1;
   bool eat = false;
-  thyrix::ContactSolverKind solver = thyrix::ContactSolverKind::Baraff;
-  std::string svgDirectory;
-  long svgEvery = 100;
 };
 
 const char* const usage =
     "Usage: PacText [options]\n"
     "Runs two Pacs with random controllers and prints 'step x0 y0 n0 x1 y1 n1': each Pac's\n"
     "centre and the number of food circles inside its ring.\n"
-    "  --steps N       steps to simulate (default 1000)\n"
-    "  --seed S        seed of the arena layout and of the controllers (default 1)\n"
     "  --food N        food circles in the arena (default 16)\n"
-    "  --solver S      baraff or gauss-seidel (default baraff)\n"
-    "  --every K       print every K-th step (default 1)\n"
-    "  --eat           Pac 0 eats the nearest food, one after another, by a script\n"
-    "  --svg DIR       write an SVG picture of the world to DIR every --svg-every steps\n"
-    "  --svg-every K   (default 100)\n"
-    "  --help          this text\n";
-
-template <class T>
-T number(std::string_view option, std::string_view text, T low) {
-  T value{};
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || value < low)
-    throw std::invalid_argument(std::string(option) + " needs a whole number >= " +
-                                std::to_string(low) + ", not '" + std::string(text) + "'");
-  return value;
-}
+    "  --eat           Pac 0 eats the nearest food, one after another, by a script\n";
 
 Options parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i < argc; ++i) {
     const std::string_view option = argv[i];
     if (option == "--help") {
-      std::fputs(usage, stdout);
+      std::printf("%s%s  --help          this text\n", usage,
+                  thyrix::examples::consoleOptionsUsage);
       std::exit(0);
     }
     if (option == "--eat") {
       o.eat = true;
       continue;
     }
-    if (i + 1 >= argc)
-      throw std::invalid_argument("unknown option or missing value: " + std::string(option));
-    const std::string_view value = argv[++i];
-    if (option == "--steps")
-      o.steps = number<long>(option, value, 0);
-    else if (option == "--seed")
-      o.seed = number<std::uint32_t>(option, value, 0);
-    else if (option == "--food")
-      o.food = number<int>(option, value, 0);
-    else if (option == "--every")
-      o.every = number<long>(option, value, 1);
-    else if (option == "--svg-every")
-      o.svgEvery = number<long>(option, value, 1);
-    else if (option == "--svg")
-      o.svgDirectory = value;
-    else if (option == "--solver") {
-      if (value == "baraff")
-        o.solver = thyrix::ContactSolverKind::Baraff;
-      else if (value == "gauss-seidel")
-        o.solver = thyrix::ContactSolverKind::GaussSeidel;
-      else
-        throw std::invalid_argument("--solver must be baraff or gauss-seidel, not '" +
-                                    std::string(value) + "'");
-    } else {
-      throw std::invalid_argument("unknown option: " + std::string(option));
+    if (const int used = thyrix::examples::parseConsoleOption(argc, argv, i, o.console)) {
+      i += used - 1;
+      continue;
     }
+    if (option != "--food") throw std::invalid_argument("unknown option: " + std::string(option));
+    if (i + 1 >= argc) throw std::invalid_argument("--food needs a value");
+    o.food = thyrix::examples::parseNumber<int>(option, argv[++i], 0);
   }
   return o;
 }
@@ -128,18 +86,19 @@ int main(int argc, char** argv) {
   try {
     options = parse(argc, argv);
   } catch (const std::invalid_argument& error) {
-    std::fprintf(stderr, "PacText: %s\n%s", error.what(), usage);
+    std::fprintf(stderr, "PacText: %s\n%s%s", error.what(), usage,
+                 thyrix::examples::consoleOptionsUsage);
     return 2;
   }
   try {
     PacSimulator::Options world;
     world.food = options.food;
-    world.seed = options.seed;
+    world.seed = options.console.seed;
     // Distinct streams for the two controllers, both from the one seed.
-    PacSimulator simulator(world,
-                           options.eat ? nullptr : std::make_unique<RandomController>(options.seed),
-                           std::make_unique<RandomController>(options.seed ^ 0x9e3779b9u));
-    simulator.setContactSolver(options.solver);
+    PacSimulator simulator(
+        world, options.eat ? nullptr : std::make_unique<RandomController>(options.console.seed),
+        std::make_unique<RandomController>(options.console.seed ^ 0x9e3779b9u));
+    simulator.setContactSolver(options.console.solver);
 
     // The script, for --eat: a new target once the last one is carried for a while, or when
     // it could not be eaten for too long (held against the other Pac, say; it is then
@@ -147,7 +106,7 @@ int main(int argc, char** argv) {
     std::optional<PacEater> eater;
     std::vector<const PhysicalObject*> skipped;
     long sinceTarget = 0;
-    for (long step = 1; step <= options.steps; ++step) {
+    for (long step = 1; step <= options.console.steps; ++step) {
       if (options.eat) {
         const bool givenUp = eater && !eater->done() && sinceTarget > 2000;
         if (givenUp) skipped.push_back(&eater->target());
@@ -169,7 +128,7 @@ int main(int argc, char** argv) {
         ++sinceTarget;
       }
       simulator.advanceTime();
-      if (step % options.every == 0) {
+      if (step % options.console.every == 0) {
         const Vector2 c0 = simulator.pac(0).centre();
         const Vector2 c1 = simulator.pac(1).centre();
         std::printf("%ld %.6f %.6f %d %.6f %.6f %d\n", step, static_cast<double>(c0.x),
@@ -177,15 +136,7 @@ int main(int argc, char** argv) {
                     static_cast<double>(c1.x), static_cast<double>(c1.y),
                     simulator.foodInside(simulator.pac(1)));
       }
-      if (!options.svgDirectory.empty() && step % options.svgEvery == 0) {
-        SvgGUI svg({0, 0}, {world.size, world.size}, 600);
-        DrawOptions draw;
-        draw.contacts = draw.contactForces = true;
-        drawWorld(simulator, svg, draw);
-        char name[64];
-        std::snprintf(name, sizeof name, "/step_%06ld.svg", step);
-        svg.save(options.svgDirectory + name);
-      }
+      examples::writeSvgIfDue(options.console, simulator, step, {0, 0}, {world.size, world.size});
     }
   } catch (const std::exception& error) {
     std::fprintf(stderr, "PacText: %s\n", error.what());

@@ -5,11 +5,11 @@
 
 #include "PacSimulator.h"
 
+#include <CommandLine.h>
 #include <Controller/RandomController.h>
 #include <GUIWx/GuiOptions.h>
 #include <GUIWx/SimulationApp.h>
 
-#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
@@ -32,16 +32,6 @@ const char* const usage =
     "  --food N             food circles in the arena (default 16)\n"
     "  --solver S           baraff or gauss-seidel (default baraff)\n";
 
-template <class T>
-T number(std::string_view option, std::string_view text, T low) {
-  T value{};
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || value < low)
-    throw std::invalid_argument(std::string(option) + " needs a whole number >= " +
-                                std::to_string(low) + ", not '" + std::string(text) + "'");
-  return value;
-}
-
 Options parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i < argc; ++i) {
@@ -61,16 +51,11 @@ Options parse(int argc, char** argv) {
     if (i + 1 >= argc) throw std::invalid_argument(std::string(option) + " needs a value");
     const std::string_view value = argv[++i];
     if (option == "--seed") {
-      o.seed = number<std::uint32_t>(option, value, 0);
+      o.seed = thyrix::examples::parseNumber<std::uint32_t>(option, value, 0);
     } else if (option == "--food") {
-      o.food = number<int>(option, value, 0);
-    } else if (value == "baraff") {
-      o.solver = thyrix::ContactSolverKind::Baraff;
-    } else if (value == "gauss-seidel") {
-      o.solver = thyrix::ContactSolverKind::GaussSeidel;
+      o.food = thyrix::examples::parseNumber<int>(option, value, 0);
     } else {
-      throw std::invalid_argument("--solver must be baraff or gauss-seidel, not '" +
-                                  std::string(value) + "'");
+      o.solver = thyrix::examples::parseSolver(value);
     }
   }
   return o;

@@ -1,0 +1,58 @@
+#include "CommandLine.h"
+
+#include <ThyrixLite/SvgGUI.h>
+#include <ThyrixLite/WorldDrawing.h>
+
+#include <cstdio>
+#include <filesystem>
+
+namespace thyrix::examples {
+
+const char* const consoleOptionsUsage =
+    "  --steps N       steps to simulate (default 1000)\n"
+    "  --seed S        seed of the layout and of the controllers (default 1)\n"
+    "  --solver S      baraff or gauss-seidel (default baraff)\n"
+    "  --every K       print every K-th step (default 1)\n"
+    "  --svg DIR       write an SVG picture of the world to DIR every --svg-every steps\n"
+    "  --svg-every K   (default 100)\n";
+
+ContactSolverKind parseSolver(std::string_view text) {
+  if (text == "baraff") return ContactSolverKind::Baraff;
+  if (text == "gauss-seidel") return ContactSolverKind::GaussSeidel;
+  throw std::invalid_argument("--solver must be baraff or gauss-seidel, not '" + std::string(text) +
+                              "'");
+}
+
+int parseConsoleOption(int argc, char** argv, int i, ConsoleOptions& options) {
+  const std::string_view option = argv[i];
+  if (option != "--steps" && option != "--seed" && option != "--solver" && option != "--every" &&
+      option != "--svg" && option != "--svg-every")
+    return 0;
+  if (i + 1 >= argc) throw std::invalid_argument(std::string(option) + " needs a value");
+  const std::string_view value = argv[i + 1];
+  if (option == "--steps") options.steps = parseNumber<long>(option, value, 0);
+  if (option == "--seed") options.seed = parseNumber<std::uint32_t>(option, value, 0);
+  if (option == "--solver") options.solver = parseSolver(value);
+  if (option == "--every") options.every = parseNumber<long>(option, value, 1);
+  if (option == "--svg-every") options.svgEvery = parseNumber<long>(option, value, 1);
+  if (option == "--svg") {
+    if (value.empty()) throw std::invalid_argument("--svg needs a directory");
+    options.svgDirectory = value;
+  }
+  return 2;
+}
+
+void writeSvgIfDue(const ConsoleOptions& options, const Simulator& simulator, long step,
+                   Vector2 lower, Vector2 upper) {
+  if (options.svgDirectory.empty() || step % options.svgEvery != 0) return;
+  std::filesystem::create_directories(options.svgDirectory);
+  SvgGUI svg(lower, upper, 600);
+  DrawOptions draw;
+  draw.contacts = draw.contactForces = draw.tactile = draw.visualRays = true;
+  drawWorld(simulator, svg, draw);
+  char name[32];
+  std::snprintf(name, sizeof name, "/step_%06ld.svg", step);
+  svg.save(options.svgDirectory + name);
+}
+
+}  // namespace thyrix::examples

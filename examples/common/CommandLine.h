@@ -1,0 +1,55 @@
+#pragma once
+/// @file CommandLine.h
+/// @brief The command-line options the example programs share, parsed in one place.
+
+#include <ThyrixLite/ContactSolver.h>
+#include <ThyrixLite/Simulator.h>
+
+#include <charconv>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace thyrix::examples {
+
+/// @p text as a whole number of at least @p low.
+/// @throws std::invalid_argument naming @p option ("--steps needs a whole number >= 0, ...")
+template <class T>
+T parseNumber(std::string_view option, std::string_view text, T low) {
+  T value{};
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || value < low)
+    throw std::invalid_argument(std::string(option) + " needs a whole number >= " +
+                                std::to_string(low) + ", not '" + std::string(text) + "'");
+  return value;
+}
+
+/// "baraff" or "gauss-seidel". @throws std::invalid_argument naming --solver
+ContactSolverKind parseSolver(std::string_view text);
+
+/// The options of every console demo.
+struct ConsoleOptions {
+  long steps = 1000;       ///< --steps: steps to simulate
+  std::uint32_t seed = 1;  ///< --seed: seed of the layout and of the controllers
+  long every = 1;          ///< --every: print every k-th step
+  ContactSolverKind solver = ContactSolverKind::Baraff;  ///< --solver
+  std::string svgDirectory;  ///< --svg: where to write pictures (none if empty)
+  long svgEvery = 100;       ///< --svg-every: a picture every k-th step
+};
+
+/// The usage lines of ConsoleOptions, for --help.
+extern const char* const consoleOptionsUsage;
+
+/// If `argv[i]` is one of ConsoleOptions, reads it and its value into @p options.
+/// @return how many arguments it used (2), or 0 when `argv[i]` is not one of them
+/// @throws std::invalid_argument for a missing or bad value, naming the option
+int parseConsoleOption(int argc, char** argv, int i, ConsoleOptions& options);
+
+/// At the steps --svg-every asks for (and only with --svg), writes
+/// `DIR/step_NNNNNN.svg`: the square [lower, upper] of the world, contacts, forces and
+/// sensors drawn. @throws std::runtime_error if the file cannot be written
+void writeSvgIfDue(const ConsoleOptions& options, const Simulator& simulator, long step,
+                   Vector2 lower, Vector2 upper);
+
+}  // namespace thyrix::examples
