@@ -12,7 +12,7 @@ passed=0
 ctest_in() {  # directory: runs its tests and adds them to the total
   local log
   log=$(cd "$1" && ctest -j"$jobs" --output-on-failure) || { echo "$log"; exit 1; }
-  echo "$log" | tail -n 3
+  echo "$log" | grep -E "tests passed|Total Test time"
   passed=$((passed + $(echo "$log" | sed -n 's/.*tests failed out of \([0-9]*\).*/\1/p')))
 }
 

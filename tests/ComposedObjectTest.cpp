@@ -31,7 +31,8 @@ TEST(ComposedPhysicalObject, MassCentreAndInertiaFromTheParts) {
   EXPECT_NEAR(body.r.y, 0, tight);
   // I = sum I_own + m d^2: 1*0.5^2/2 + 1*(4/3)^2 + 3*0.25^2/2 + 3*(2/3)^2 + I_caps + 2*(1/3)^2.
   const real capsule = CappedRectangle::momentOfInertia(1, real(0.1), 2);
-  const real expected = real(0.125) + real(16) / 9 + real(0.09375) + real(4) / 3 + capsule + real(2) / 9;
+  const real expected =
+      real(0.125) + real(16) / 9 + real(0.09375) + real(4) / 3 + capsule + real(2) / 9;
   EXPECT_NEAR(body.I, expected, tight);
 }
 
@@ -86,12 +87,21 @@ TEST(ComposedPhysicalObject, BadPartsAreRefusedAndTheBodyUnchanged) {
     EXPECT_NEAR(body.m, 1, tight);
   };
   expectField([&] { body.add(std::unique_ptr<Circle>(), {0, 0}); }, "ComposedPhysicalObject.part");
-  expectField([&] { body.add(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}), {0, 0}); },
-              "ComposedPhysicalObject.part");
-  expectField([&] { body.add(std::make_unique<Circle>(real(1), real(1)), {std::nan(""), 0}); },
-              "ComposedPhysicalObject.relativePosition");
-  expectField([&] { body.add(std::make_unique<Circle>(real(1), real(1)), {0, 0}, real(INFINITY)); },
-              "ComposedPhysicalObject.relativeAngle");
+  expectField(
+      [&] {
+        body.add(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}), {0, 0});
+      },
+      "ComposedPhysicalObject.part");
+  expectField(
+      [&] {
+        body.add(std::make_unique<Circle>(real(1), real(1)), {std::nan(""), 0});
+      },
+      "ComposedPhysicalObject.relativePosition");
+  expectField(
+      [&] {
+        body.add(std::make_unique<Circle>(real(1), real(1)), {0, 0}, real(INFINITY));
+      },
+      "ComposedPhysicalObject.relativeAngle");
 
   Simulator simulator;
   try {
