@@ -2,7 +2,8 @@
 # Builds and runs every test of Thyrix, warnings as errors:
 #   1. Release, real = double, with the wxWidgets front-end when wxWidgets is installed;
 #   2. an installed Thyrix found by find_package from another project;
-#   3. Debug under AddressSanitizer + UndefinedBehaviorSanitizer;  4. Release, real = float.
+#   3. Debug under AddressSanitizer + UndefinedBehaviorSanitizer, with the front-end too;
+#   4. Release, real = float.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
@@ -24,8 +25,8 @@ run() {  # name, then cmake options
   ctest_in "build/$name"
 }
 
-# The wxWidgets front-end and its tests (under Xvfb) in the release configuration, when
-# wxWidgets is installed (scripts/install-deps.sh with THYRIX_WITH_GUI=1).
+# The wxWidgets front-end and its tests (under Xvfb) in the release and sanitizer
+# configurations, when wxWidgets is installed (scripts/install-deps.sh with THYRIX_WITH_GUI=1).
 gui=()
 if dpkg -s libwxgtk3.2-dev >/dev/null 2>&1; then gui=(-DTHYRIX_BUILD_GUI=ON); fi
 
@@ -42,7 +43,7 @@ cmake --build build/consumer -j"$jobs" >/dev/null
 ctest_in build/consumer
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-run sanitize -DCMAKE_BUILD_TYPE=Debug -DTHYRIX_SANITIZE=address,undefined
+run sanitize -DCMAKE_BUILD_TYPE=Debug -DTHYRIX_SANITIZE=address,undefined "${gui[@]}"
 run float -DCMAKE_BUILD_TYPE=Release -DTHYRIX_REAL=float
 
 echo "total: $passed passed, 0 failed"
