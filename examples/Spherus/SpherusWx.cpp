@@ -1,92 +1,37 @@
-// SpherusWx: Spherus with the random controller in its arena, in a window. The same options as
-// SpherusText for the world, plus the shared GUI options (speed, geometry, and the automation
+// SpherusWx: Spherus with the random controller in its arena, in a window. The same world
+// options as SpherusText, plus the shared GUI options (speed, geometry, and the automation
 // options --screenshot, --after and --print-drag). Run with --help for the list.
 
 #include "SpherusSimulator.h"
 
-#include <CommandLine.h>
 #include <Controller/RandomController.h>
-#include <GUIWx/GuiOptions.h>
-#include <GUIWx/SimulationApp.h>
-
-#include <cstdio>
-#include <cstdlib>
-#include <stdexcept>
-#include <string>
-#include <string_view>
-
-namespace {
-
-struct Options {
-  std::uint32_t seed = 1;
-  int objects = 20;
-  thyrix::ContactSolverKind solver = thyrix::ContactSolverKind::Baraff;
-  thyrix::GuiOptions gui;
-};
-
-const char* const usage =
-    "Usage: SpherusWx [options]\n"
-    "Shows Spherus with a random controller in its arena; drag objects with the mouse.\n"
-    "  --seed S             seed of the arena layout and of the controller (default 1)\n"
-    "  --objects N          circles in the arena (default 20)\n"
-    "  --solver S           baraff or gauss-seidel (default baraff)\n";
-
-Options parse(int argc, char** argv) {
-  Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string_view option = argv[i];
-    if (option == "--help") {
-      std::fputs(usage, stdout);
-      std::fputs(thyrix::guiOptionsUsage, stdout);
-      std::fputs("  --help               this text\n", stdout);
-      std::exit(0);
-    }
-    if (const int used = thyrix::parseGuiOption(argc, argv, i, o.gui); used > 0) {
-      i += used - 1;
-      continue;
-    }
-    if (option != "--seed" && option != "--objects" && option != "--solver")
-      throw std::invalid_argument("unknown option: " + std::string(option));
-    if (i + 1 >= argc) throw std::invalid_argument(std::string(option) + " needs a value");
-    const std::string_view value = argv[++i];
-    if (option == "--seed") {
-      o.seed = thyrix::examples::parseNumber<std::uint32_t>(option, value, 0);
-    } else if (option == "--objects") {
-      o.objects = thyrix::examples::parseNumber<int>(option, value, 0);
-    } else {
-      o.solver = thyrix::examples::parseSolver(value);
-    }
-  }
-  return o;
-}
-
-}  // namespace
+#include <WindowCommandLine.h>
 
 int main(int argc, char** argv) {
   using namespace thyrix;
-  Options options;
-  try {
-    options = parse(argc, argv);
-  } catch (const std::invalid_argument& error) {
-    std::fprintf(stderr, "SpherusWx: %s\n%s", error.what(), usage);
-    std::fputs(guiOptionsUsage, stderr);
-    return 2;
-  }
-
-  SimulationSetup setup;
-  setup.title = "SpherusWx - Thyrix";
-  setup.solver = options.solver;
-  // Called on the simulation thread at start and at each reset: the same seed rebuilds the
-  // same arena and controller.
-  setup.makeWorld = [seed = options.seed, objects = options.objects] {
-    SpherusSimulator::Options world;
-    world.objects = objects;
-    world.seed = seed;
-    return std::make_unique<SpherusSimulator>(world, std::make_unique<RandomController>(seed));
-  };
-  setup.agentSignals = agentSignalsOf<SpherusSimulator>([](const SpherusSimulator& world) {
-    const Spherus& agent = world.spherus();
-    return AgentSignals{agent.sensors(), agent.effectors()};
+  const examples::WindowProgram program{
+      "SpherusWx",
+      "Usage: SpherusWx [options]\n"
+      "Shows Spherus with a random controller in its arena; drag objects with the mouse.\n"
+      "  --seed S             seed of the arena layout and of the controller (default 1)\n"
+      "  --solver S           baraff or gauss-seidel (default baraff)\n"
+      "  --objects N          circles in the arena (default 20)\n",
+      "--objects", 20};
+  return examples::runWindowProgram(program, argc, argv, [](const examples::WindowOptions& o) {
+    SimulationSetup setup;
+    setup.title = "SpherusWx - Thyrix";
+    // Called on the simulation thread at start and at each reset: the same seed rebuilds the
+    // same arena and controller.
+    setup.makeWorld = [seed = o.seed, objects = o.count] {
+      SpherusSimulator::Options world;
+      world.objects = objects;
+      world.seed = seed;
+      return std::make_unique<SpherusSimulator>(world, std::make_unique<RandomController>(seed));
+    };
+    setup.agentSignals = agentSignalsOf<SpherusSimulator>([](const SpherusSimulator& world) {
+      const Spherus& agent = world.spherus();
+      return AgentSignals{agent.sensors(), agent.effectors()};
+    });
+    return setup;
   });
-  return runSimulationApp(std::move(setup), options.gui, argv[0]);
 }
