@@ -19,42 +19,14 @@
 
 namespace {
 
-struct Options {
-  thyrix::examples::ConsoleOptions console;
-  int food = 16;
-  bool eat = false;
-};
-
-const char* const usage =
+const thyrix::examples::ConsoleProgram program{
+    "PacText",
     "Usage: PacText [options]\n"
     "Runs two Pacs with random controllers and prints 'step x0 y0 n0 x1 y1 n1': each Pac's\n"
     "centre and the number of food circles inside its ring.\n"
     "  --food N        food circles in the arena (default 16)\n"
-    "  --eat           Pac 0 eats the nearest food, one after another, by a script\n";
-
-Options parse(int argc, char** argv) {
-  Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string_view option = argv[i];
-    if (option == "--help") {
-      std::printf("%s%s  --help          this text\n", usage,
-                  thyrix::examples::consoleOptionsUsage);
-      std::exit(0);
-    }
-    if (option == "--eat") {
-      o.eat = true;
-      continue;
-    }
-    if (const int used = thyrix::examples::parseConsoleOption(argc, argv, i, o.console)) {
-      i += used - 1;
-      continue;
-    }
-    if (option != "--food") throw std::invalid_argument("unknown option: " + std::string(option));
-    if (i + 1 >= argc) throw std::invalid_argument("--food needs a value");
-    o.food = thyrix::examples::parseNumber<int>(option, argv[++i], 0);
-  }
-  return o;
-}
+    "  --eat           Pac 0 eats the nearest food, one after another, by a script\n",
+    "--food", 16, "--eat"};
 
 /// The food circle nearest to Pac 0 that no Pac holds, that is not in @p skipped, and that
 /// lies far enough from the walls for Pac to get its mouth past it; or null.
@@ -82,23 +54,21 @@ const thyrix::Circle* nearestFreeFood(const thyrix::PacSimulator& simulator,
 
 int main(int argc, char** argv) {
   using namespace thyrix;
-  Options options;
+  examples::ConsoleArguments options;
   try {
-    options = parse(argc, argv);
+    options = examples::parseConsoleProgram(program, argc, argv);
   } catch (const std::invalid_argument& error) {
-    std::fprintf(stderr, "PacText: %s\n%s%s", error.what(), usage,
-                 thyrix::examples::consoleOptionsUsage);
-    return 2;
+    return examples::reportUsageError(program, error);
   }
   try {
     PacSimulator::Options world;
-    world.food = options.food;
-    world.seed = options.console.seed;
+    world.food = options.count;
+    world.seed = options.run.seed;
     // Distinct streams for the two controllers, both from the one seed.
     PacSimulator simulator(
-        world, options.eat ? nullptr : std::make_unique<RandomController>(options.console.seed),
-        std::make_unique<RandomController>(options.console.seed ^ 0x9e3779b9u));
-    simulator.setContactSolver(options.console.solver);
+        world, options.flag ? nullptr : std::make_unique<RandomController>(options.run.seed),
+        std::make_unique<RandomController>(options.run.seed ^ 0x9e3779b9u));
+    simulator.setContactSolver(options.run.solver);
 
     // The script, for --eat: a new target once the last one is carried for a while, or when
     // it could not be eaten for too long (held against the other Pac, say; it is then
@@ -106,8 +76,8 @@ int main(int argc, char** argv) {
     std::optional<PacEater> eater;
     std::vector<const PhysicalObject*> skipped;
     long sinceTarget = 0;
-    for (long step = 1; step <= options.console.steps; ++step) {
-      if (options.eat) {
+    for (long step = 1; step <= options.run.steps; ++step) {
+      if (options.flag) {
         const bool givenUp = eater && !eater->done() && sinceTarget > 2000;
         if (givenUp) skipped.push_back(&eater->target());
         if (!eater || givenUp || (eater->done() && sinceTarget > 300)) {
@@ -128,7 +98,7 @@ int main(int argc, char** argv) {
         ++sinceTarget;
       }
       simulator.advanceTime();
-      if (step % options.console.every == 0) {
+      if (step % options.run.every == 0) {
         const Vector2 c0 = simulator.pac(0).centre();
         const Vector2 c1 = simulator.pac(1).centre();
         std::printf("%ld %.6f %.6f %d %.6f %.6f %d\n", step, static_cast<double>(c0.x),
@@ -136,7 +106,7 @@ int main(int argc, char** argv) {
                     static_cast<double>(c1.x), static_cast<double>(c1.y),
                     simulator.foodInside(simulator.pac(1)));
       }
-      examples::writeSvgIfDue(options.console, simulator, step, {0, 0}, {world.size, world.size});
+      examples::writeSvgIfDue(options.run, simulator, step, {0, 0}, {world.size, world.size});
     }
   } catch (const std::exception& error) {
     std::fprintf(stderr, "PacText: %s\n", error.what());

@@ -14,53 +14,27 @@
 
 namespace {
 
-struct Options {
-  thyrix::examples::ConsoleOptions console;
-  int objects = 20;
-};
-
-const char* const usage =
+const thyrix::examples::ConsoleProgram program{
+    "SpherusText",
     "Usage: SpherusText [options]\n"
     "Runs Spherus with a random controller and prints 'step x y' (the agent's centre).\n"
-    "  --objects N     circles in the arena (default 20)\n";
-
-Options parse(int argc, char** argv) {
-  Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string_view option = argv[i];
-    if (option == "--help") {
-      std::printf("%s%s  --help          this text\n", usage,
-                  thyrix::examples::consoleOptionsUsage);
-      std::exit(0);
-    }
-    if (const int used = thyrix::examples::parseConsoleOption(argc, argv, i, o.console)) {
-      i += used - 1;
-      continue;
-    }
-    if (option != "--objects")
-      throw std::invalid_argument("unknown option: " + std::string(option));
-    if (i + 1 >= argc) throw std::invalid_argument("--objects needs a value");
-    o.objects = thyrix::examples::parseNumber<int>(option, argv[++i], 0);
-  }
-  return o;
-}
+    "  --objects N     circles in the arena (default 20)\n",
+    "--objects", 20};
 
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace thyrix;
-  Options options;
+  examples::ConsoleArguments options;
   try {
-    options = parse(argc, argv);
+    options = examples::parseConsoleProgram(program, argc, argv);
   } catch (const std::invalid_argument& error) {
-    std::fprintf(stderr, "SpherusText: %s\n%s%s", error.what(), usage,
-                 examples::consoleOptionsUsage);
-    return 2;
+    return examples::reportUsageError(program, error);
   }
   try {
-    const examples::ConsoleOptions& run = options.console;
+    const examples::ConsoleOptions& run = options.run;
     SpherusSimulator::Options world;
-    world.objects = options.objects;
+    world.objects = options.count;
     world.seed = run.seed;
     SpherusSimulator simulator(world, std::make_unique<RandomController>(run.seed));
     simulator.setContactSolver(run.solver);

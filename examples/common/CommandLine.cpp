@@ -42,6 +42,37 @@ int parseConsoleOption(int argc, char** argv, int i, ConsoleOptions& options) {
   return 2;
 }
 
+ConsoleArguments parseConsoleProgram(const ConsoleProgram& program, int argc, char** argv) {
+  ConsoleArguments o;
+  o.count = program.defaultCount;
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view option = argv[i];
+    if (option == "--help") {
+      std::printf("%s%s  --help          this text\n", program.usage, consoleOptionsUsage);
+      std::exit(0);
+    }
+    if (!program.flagOption.empty() && option == program.flagOption) {
+      o.flag = true;
+      continue;
+    }
+    if (const int used = parseConsoleOption(argc, argv, i, o.run)) {
+      i += used - 1;
+      continue;
+    }
+    if (option != program.countOption)
+      throw std::invalid_argument("unknown option: " + std::string(option));
+    if (i + 1 >= argc) throw std::invalid_argument(std::string(option) + " needs a value");
+    o.count = parseNumber<int>(option, argv[++i], 0);
+  }
+  return o;
+}
+
+int reportUsageError(const ConsoleProgram& program, const std::exception& error) {
+  std::fprintf(stderr, "%s: %s\n%s%s", program.name, error.what(), program.usage,
+               consoleOptionsUsage);
+  return 2;
+}
+
 void writeSvgIfDue(const ConsoleOptions& options, const Simulator& simulator, long step,
                    Vector2 lower, Vector2 upper) {
   if (options.svgDirectory.empty() || step % options.svgEvery != 0) return;

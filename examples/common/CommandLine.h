@@ -46,6 +46,29 @@ extern const char* const consoleOptionsUsage;
 /// @throws std::invalid_argument for a missing or bad value, naming the option
 int parseConsoleOption(int argc, char** argv, int i, ConsoleOptions& options);
 
+/// What a console program accepts besides ConsoleOptions.
+struct ConsoleProgram {
+  const char* name;                  ///< the program, e.g. "SpherusText"
+  const char* usage;                 ///< its usage lines, ending with its own options
+  std::string_view countOption;      ///< its object-count option, e.g. "--objects"
+  int defaultCount = 0;              ///< that option's default
+  std::string_view flagOption = {};  ///< an on/off option, e.g. "--eat", or none
+};
+
+/// A console program's parsed options.
+struct ConsoleArguments {
+  ConsoleOptions run;  ///< the shared options
+  int count = 0;       ///< the count option
+  bool flag = false;   ///< the on/off option
+};
+
+/// Parses a console program's command line; --help prints the usage and exits 0.
+/// @throws std::invalid_argument naming a bad or unknown option
+ConsoleArguments parseConsoleProgram(const ConsoleProgram& program, int argc, char** argv);
+
+/// Prints @p error and the usage to stderr; returns 2, the status of a bad command line.
+int reportUsageError(const ConsoleProgram& program, const std::exception& error);
+
 /// At the steps --svg-every asks for (and only with --svg), writes
 /// `DIR/step_NNNNNN.svg`: the square [lower, upper] of the world, contacts, forces and
 /// sensors drawn. @throws std::runtime_error if the file cannot be written
