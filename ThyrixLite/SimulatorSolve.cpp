@@ -1,0 +1,213 @@
+/// @file SimulatorSolve.cpp
+/// @brief Phase 6 of a step: the contact LCP island by island, then velocities and touch.
+#include <ThyrixLite/BaraffSolver.h>
+#include <ThyrixLite/GaussSeidelSolver.h>
+#include <ThyrixLite/Simulator.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace thyrix {
+
+void Simulator::solveContacts() {
+  statistics_.islands = statistics_.solvedIslands = 0;
+  statistics_.gaussSeidelSweeps = statistics_.baraffPivots = statistics_.baraffFallbacks = 0;
+  const real dt = timestep_;
+  internal_.clear();
+  internalOwner_.clear();
+  if (hasMultiBodies_) {
+    for (std::uint32_t i = 0; i < objects.size(); ++i) {
+      if (multiBodies_[i] == nullptr) continue;
+      multiBodies_[i]->collectInternalConstraints(dt, internal_);
+      internalOwner_.resize(internal_.size(), i);
+    }
+  }
+  if (contacts.empty() && internal_.empty()) {
+    lastForces_.reset(0);
+    updateTactileSensors();
+    return;
+  }
+
+  for (std::uint32_t i = 0; i < objects.size(); ++i) {
+    const PhysicalObject& object = objects[i];
+    // A multi-body object answers for itself (general islands): zero here, so the rigid
+    // formulas ignore its sides.
+    bodies_[i] =
+        multiBodies_[i] != nullptr
+            ? SolverBody{}
+            : SolverBody{object.v, object.omega, object.inverseMass(), object.inverseInertia()};
+    movable_[i] = movable(i) ? 1 : 0;
+  }
+  const real correction = settings_.penetrationCorrection;
+  rows_.resize(contacts.size() + internal_.size());
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const GlobalContactInfo& c = contacts.items_[k];
+    ContactConstraint& row = rows_[k];
+    row.a = c.bodyA;
+    row.b = c.bodyB;
+    row.normal = c.normal;
+    row.armA = cross(c.point - c.objectA->r, c.normal);
+    row.armB = cross(c.point - c.objectB->r, c.normal);
+    // Overlap: separate at a fraction of the depth per step; gap: approach at most by the gap.
+    row.target = c.depth > 0 ? correction * c.depth / dt : c.depth / dt;
+    row.force = 0;
+  }
+  // A joint limit is a row of its object alone; its Jacobian is the object's business.
+  for (std::size_t j = 0; j < internal_.size(); ++j)
+    rows_[contacts.size() + j] = {
+        internalOwner_[j], internalOwner_[j], {}, 0, 0, internal_[j].target, 0};
+
+  islands_.build(rows_, movable_);
+  statistics_.islands = islands_.count();
+  for (std::size_t i = 0; i < islands_.count(); ++i) {
+    const auto island = islands_.island(i);
+    const bool general =
+        hasMultiBodies_ && std::any_of(island.begin(), island.end(), [this](std::uint32_t k) {
+          return multiBodies_[rows_[k].a] != nullptr || multiBodies_[rows_[k].b] != nullptr;
+        });
+    if (general)
+      solveGeneralIsland(island);
+    else
+      solveIsland(island);
+  }
+
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    PhysicalObject& object = objects[i];
+    if (object.fixed || multiBodies_[i] != nullptr) continue;
+    object.v = bodies_[i].v;
+    object.omega = bodies_[i].omega;
+  }
+  lastForces_.reset(contacts.size());
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    GlobalContactInfo& c = contacts.items_[k];
+    c.force = rows_[k].force;
+    if (c.force > 0)
+      lastForces_.insert(ContactForceCache::key(c.shapeA, c.shapeB, c.feature), c.force);
+  }
+  for (ContactInfo& info : objectContacts_) info.force = rows_[info.index].force;
+  updateTactileSensors();
+}
+
+void Simulator::solveGeneralIsland(std::span<const std::uint32_t> island) {
+  const std::size_t m = island.size();
+  const std::size_t contactCount = contacts.size();
+  // The multi-body sides of every row, as unit forces of their objects.
+  sides_.clear();
+  for (std::uint32_t p = 0; p < m; ++p) {
+    const std::uint32_t k = island[p];
+    if (k >= contactCount) {
+      const std::size_t j = k - contactCount;
+      sides_.push_back({internalOwner_[j], p, internal_[j].force});
+      continue;
+    }
+    const GlobalContactInfo& c = contacts.items_[k];
+    if (multiBodies_[c.bodyA] != nullptr)
+      sides_.push_back({c.bodyA, p, {c.primitiveA, c.point, -c.normal, -1, 0}});
+    if (multiBodies_[c.bodyB] != nullptr)
+      sides_.push_back({c.bodyB, p, {c.primitiveB, c.point, c.normal, -1, 0}});
+  }
+
+  // The LCP: rigid couplings, then each multi-body object's response block.
+  denseMatrix_.assign(m * m, 0);
+  denseSlack_.resize(m);
+  for (std::size_t p = 0; p < m; ++p) {
+    const ContactConstraint& row = rows_[island[p]];
+    denseSlack_[p] = row.normalVelocity(bodies_[row.a], bodies_[row.b]) - row.target;
+    for (std::size_t q = 0; q < m; ++q)
+      denseMatrix_[p * m + q] = rigidCoupling(row, rows_[island[q]], bodies_);
+  }
+  for (const Side& side : sides_)
+    denseSlack_[side.row] += multiBodies_[side.owner]->velocityAlong(side.force);
+  const auto forEachOwner = [this](auto&& visit) {
+    for (std::size_t s = 0; s < sides_.size(); ++s) {
+      const std::uint32_t owner = sides_[s].owner;
+      bool seen = false;
+      for (std::size_t t = 0; t < s && !seen; ++t) seen = sides_[t].owner == owner;
+      if (seen) continue;
+      ownerForces_.clear();
+      ownerRows_.clear();
+      for (std::size_t t = s; t < sides_.size(); ++t) {
+        if (sides_[t].owner != owner) continue;
+        ownerForces_.push_back(sides_[t].force);
+        ownerRows_.push_back(sides_[t].row);
+      }
+      visit(*multiBodies_[owner]);
+    }
+  };
+  forEachOwner([&](MultiBodyObject& object) {
+    const std::size_t n = ownerForces_.size();
+    response_.resize(n * n);
+    object.responseMatrix(ownerForces_, response_);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j)
+        denseMatrix_[ownerRows_[i] * m + ownerRows_[j]] += response_[i * n + j];
+  });
+
+  denseForces_.assign(m, 0);
+  if (std::any_of(denseSlack_.begin(), denseSlack_.end(), [](real s) { return s < 0; })) {
+    ++statistics_.solvedIslands;
+    bool solved = false;
+    if (solverKind_ == ContactSolverKind::Baraff) {
+      solved = baraff_.solveMatrix(denseMatrix_, denseSlack_, denseForces_);
+      statistics_.baraffPivots += static_cast<std::size_t>(baraff_.lastPivotCount());
+      if (!solved) {
+        ++statistics_.baraffFallbacks;
+        std::fill(denseForces_.begin(), denseForces_.end(), real(0));
+      }
+    }
+    if (!solved)
+      statistics_.gaussSeidelSweeps += static_cast<std::size_t>(
+          GaussSeidelSolver::solveMatrix(denseMatrix_, denseSlack_, denseForces_, settings_));
+  }
+
+  // Forces to velocities: rigid bodies through their rows, multi-body objects by themselves.
+  for (std::size_t p = 0; p < m; ++p) {
+    ContactConstraint& row = rows_[island[p]];
+    row.force = denseForces_[p];
+    row.applyImpulse(row.force, bodies_[row.a], bodies_[row.b]);
+  }
+  forEachOwner([&](MultiBodyObject& object) {
+    ownerMagnitudes_.resize(ownerForces_.size());
+    for (std::size_t i = 0; i < ownerForces_.size(); ++i)
+      ownerMagnitudes_[i] = denseForces_[ownerRows_[i]];
+    object.applyConstraintForces(ownerForces_, ownerMagnitudes_);
+  });
+}
+
+void Simulator::updateTactileSensors() {
+  for (Primitive* primitive : sensingPrimitives_) primitive->tactile_.clear();
+  for (const GlobalContactInfo& c : contacts.items_) {
+    if (c.force <= 0) continue;
+    if (c.primitiveA->tactile_.enabled()) c.primitiveA->touch(c.point, c.force);
+    if (c.primitiveB->tactile_.enabled()) c.primitiveB->touch(c.point, c.force);
+  }
+  for (Primitive* primitive : sensingPrimitives_) primitive->tactile_.finish();
+}
+
+void Simulator::solveIsland(std::span<const std::uint32_t> island) {
+  // An island whose contacts all hold without force needs no solve: its bodies keep u0.
+  const bool satisfied = std::all_of(island.begin(), island.end(), [this](std::uint32_t k) {
+    const ContactConstraint& row = rows_[k];
+    return row.normalVelocity(bodies_[row.a], bodies_[row.b]) >= row.target;
+  });
+  if (satisfied) return;
+  ++statistics_.solvedIslands;
+  if (solverKind_ == ContactSolverKind::Baraff &&
+      island.size() <= static_cast<std::size_t>(settings_.baraffMaxContacts)) {
+    const bool solved = baraff_.solve(island, rows_, bodies_);
+    statistics_.baraffPivots += static_cast<std::size_t>(baraff_.lastPivotCount());
+    if (solved) return;
+    ++statistics_.baraffFallbacks;
+  }
+  if (settings_.warmStart) {
+    for (const std::uint32_t k : island) {
+      const GlobalContactInfo& c = contacts.items_[k];
+      ContactConstraint& row = rows_[k];
+      row.force = lastForces_.find(ContactForceCache::key(c.shapeA, c.shapeB, c.feature));
+      if (row.force > 0) row.applyImpulse(row.force, bodies_[row.a], bodies_[row.b]);
+    }
+  }
+  statistics_.gaussSeidelSweeps +=
+      static_cast<std::size_t>(GaussSeidelSolver::solve(island, rows_, bodies_, settings_));
+}
+}  // namespace thyrix
