@@ -4,37 +4,164 @@
 #include <cmath>
 
 namespace thyrix {
+namespace {
+
+constexpr std::uint32_t noBody = ~std::uint32_t{0};
+
+}  // namespace
+
+void GaussSeidelSolver::reserve(std::size_t bodies, std::size_t rows) {
+  for (auto* buffer : {&forces_, &changes_, &direction_}) buffer->reserve(rows);
+  rows_.reserve(rows);
+  turning_.reserve(rows);
+  // Each row may bring two bodies of its own (a fixed body gets one copy per row).
+  bodies_.reserve(2 * rows);
+  globalBody_.reserve(2 * rows);
+  localBody_.reserve(bodies);
+}
 
 int GaussSeidelSolver::solve(std::span<const std::uint32_t> island,
                              std::span<ContactConstraint> rows, std::span<SolverBody> bodies,
                              const ContactSolverSettings& settings) {
-  int sweep = 0;
-  while (sweep < settings.gaussSeidelMaxIterations) {
-    ++sweep;
-    real largestChange = 0;  // in velocity units: |delta f| * A_kk
+  gather(island, rows, bodies, settings.relaxation);
+  const bool accelerate = settings.accelerateGaussSeidel;
+  if (accelerate) direction_.assign(rows_.size(), 0);
+  real lastNorm = 0;  // squared norm of the previous sweep's change
+  int sweeps = 0;
+  while (sweeps < settings.gaussSeidelMaxIterations) {
+    ++sweeps;
     // Symmetric Gauss-Seidel: alternate sweep directions, so that a correction travels through
-    // a long chain of contacts (a pile's weight down to the floor and the floor's reaction
-    // back up) in one pair of sweeps instead of one contact per sweep.
-    const bool backward = sweep % 2 == 0;
-    for (std::size_t position = 0; position < island.size(); ++position) {
-      const std::uint32_t k = island[backward ? island.size() - 1 - position : position];
-      ContactConstraint& row = rows[k];
-      SolverBody& bodyA = bodies[row.a];
-      SolverBody& bodyB = bodies[row.b];
-      const real selfResponse = row.selfResponse(bodyA, bodyB);
-      const real residual = row.normalVelocity(bodyA, bodyB) - row.target;
-      // Clamp the accumulated force, not the increment.
-      const real newForce =
-          std::max(real(0), row.force - settings.relaxation * residual / selfResponse);
-      const real change = newForce - row.force;
-      if (change == 0) continue;
-      row.force = newForce;
-      row.applyImpulse(change, bodyA, bodyB);
-      largestChange = std::max(largestChange, std::abs(change) * selfResponse);
+    // a long chain of contacts both ways (the weight down, the floor's reaction up).
+    const bool backward = sweeps % 2 == 0;
+    const SweepResult result = turningIsland_
+                                   ? (backward ? sweep<true, true>() : sweep<false, true>())
+                                   : (backward ? sweep<true, false>() : sweep<false, false>());
+    if (result.largestChange <= settings.gaussSeidelTolerance) break;
+    // The last sweep is not followed by a conjugate step: the result is a projected sweep's.
+    if (!accelerate || sweeps == settings.gaussSeidelMaxIterations) continue;
+    if (lastNorm > 0 && result.squaredNorm <= lastNorm) {
+      const real beta = result.squaredNorm / lastNorm;
+      turningIsland_ ? conjugateStep<true>(beta) : conjugateStep<false>(beta);
+    } else {  // first sweep, or the change grew: restart along the change itself
+      std::copy(changes_.begin(), changes_.end(), direction_.begin());
     }
-    if (largestChange <= settings.gaussSeidelTolerance) break;
+    lastNorm = result.squaredNorm;
   }
-  return sweep;
+  scatter(island, rows, bodies);
+  return sweeps;
+}
+
+void GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
+                               std::span<const ContactConstraint> rows,
+                               std::span<const SolverBody> bodies, real relaxation) {
+  if (localBody_.size() < bodies.size()) localBody_.resize(bodies.size(), noBody);
+  bodies_.clear();
+  globalBody_.clear();
+  const auto local = [&](std::uint32_t body) {
+    const SolverBody& b = bodies[body];
+    // A body that cannot move gets a private copy in each row: rows that share only a wall
+    // then do not wait on each other's (null) updates of its velocity.
+    if (b.inverseMass == 0 && b.inverseInertia == 0) {
+      bodies_.push_back({b.v, b.omega});
+      globalBody_.push_back(noBody);
+      return static_cast<std::uint32_t>(bodies_.size() - 1);
+    }
+    std::uint32_t& index = localBody_[body];
+    if (index == noBody) {
+      index = static_cast<std::uint32_t>(bodies_.size());
+      bodies_.push_back({b.v, b.omega});
+      globalBody_.push_back(body);
+    }
+    return index;
+  };
+  const std::size_t n = island.size();
+  rows_.resize(n);
+  forces_.resize(n);
+  changes_.resize(n);
+  // A lever arm matters if its body turns or can be turned (a fixed wall's does not).
+  const auto turns = [&](real arm, const SolverBody& body) {
+    return arm != 0 && (body.inverseInertia != 0 || body.omega != 0);
+  };
+  turningIsland_ = std::any_of(island.begin(), island.end(), [&](std::uint32_t k) {
+    return turns(rows[k].armA, bodies[rows[k].a]) || turns(rows[k].armB, bodies[rows[k].b]);
+  });
+  turning_.resize(turningIsland_ ? n : 0);
+  for (std::size_t p = 0; p < n; ++p) {
+    const ContactConstraint& c = rows[island[p]];
+    const SolverBody& bodyA = bodies[c.a];
+    const SolverBody& bodyB = bodies[c.b];
+    const real response = c.selfResponse(bodyA, bodyB);
+    // A row nothing can move along takes no force (its zero diagonal would poison the island).
+    rows_[p] = {local(c.a),        local(c.b), c.normal, bodyA.inverseMass,
+                bodyB.inverseMass, c.target,   response, response > 0 ? relaxation / response : 0};
+    if (turningIsland_)
+      turning_[p] = {c.armA, c.armB, -c.armA * bodyA.inverseInertia, c.armB * bodyB.inverseInertia};
+    forces_[p] = c.force;
+  }
+}
+
+template <bool turning>
+void GaussSeidelSolver::apply(std::size_t p, real change) {
+  const Row& row = rows_[p];
+  Body& bodyA = bodies_[row.a];
+  Body& bodyB = bodies_[row.b];
+  bodyA.v -= row.normal * (change * row.inverseMassA);
+  bodyB.v += row.normal * (change * row.inverseMassB);
+  if constexpr (turning) {
+    bodyA.omega += turning_[p].turnA * change;
+    bodyB.omega += turning_[p].turnB * change;
+  }
+}
+
+template <bool backward, bool turning>
+GaussSeidelSolver::SweepResult GaussSeidelSolver::sweep() {
+  SweepResult result;
+  const std::size_t n = rows_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t p = backward ? n - 1 - i : i;
+    const Row& row = rows_[p];
+    const Body& bodyA = bodies_[row.a];
+    const Body& bodyB = bodies_[row.b];
+    real velocity = dot(row.normal, bodyB.v - bodyA.v);
+    if constexpr (turning)
+      velocity += turning_[p].armB * bodyB.omega - turning_[p].armA * bodyA.omega;
+    // Clamp the accumulated force, not the increment. No test for a zero change: the branch
+    // would be unpredictable, and adding zero is cheaper than a mispredicted jump.
+    const real force = std::max(real(0), forces_[p] - (velocity - row.target) * row.inverseScaled);
+    const real change = force - forces_[p];
+    forces_[p] = force;
+    changes_[p] = change;
+    apply<turning>(p, change);
+    result.largestChange = std::max(result.largestChange, std::abs(change) * row.response);
+    result.squaredNorm += change * change;
+  }
+  return result;
+}
+
+template <bool turning>
+void GaussSeidelSolver::conjugateStep(real beta) {
+  for (std::size_t p = 0; p < rows_.size(); ++p) {
+    const real step = beta * direction_[p];
+    direction_[p] = step + changes_[p];
+    // The forces stay feasible (the next sweep would project them anyway), and the velocities
+    // follow them.
+    const real force = std::max(real(0), forces_[p] + step);
+    const real change = force - forces_[p];
+    forces_[p] = force;
+    apply<turning>(p, change);
+  }
+}
+
+void GaussSeidelSolver::scatter(std::span<const std::uint32_t> island,
+                                std::span<ContactConstraint> rows, std::span<SolverBody> bodies) {
+  for (std::size_t p = 0; p < island.size(); ++p) rows[island[p]].force = forces_[p];
+  for (std::size_t l = 0; l < bodies_.size(); ++l) {
+    const std::uint32_t body = globalBody_[l];
+    if (body == noBody) continue;  // a fixed body's copy
+    bodies[body].v = bodies_[l].v;
+    bodies[body].omega = bodies_[l].omega;
+    localBody_[body] = noBody;
+  }
 }
 
 int GaussSeidelSolver::solveMatrix(std::span<const real> matrix, std::span<const real> slack,

@@ -1,10 +1,13 @@
 #pragma once
 /// @file GaussSeidelSolver.h
-/// @brief Projected Gauss-Seidel on the contact LCP, working on body velocities.
+/// @brief Projected Gauss-Seidel on the contact LCP, working on body velocities, with
+/// nonsmooth nonlinear conjugate gradient acceleration.
 
 #include <ThyrixLite/ContactSolver.h>
 
+#include <cstdint>
 #include <span>
+#include <vector>
 
 namespace thyrix {
 
@@ -12,17 +15,91 @@ namespace thyrix {
 /// `f_k <- max(0, f_k - (w_k - c_k) / A_kk)`, updating the two bodies' velocities after each
 /// contact, so the matrix A is never formed. Starts from the forces already in the rows
 /// (warm start) with the body velocities consistent with them.
+///
+/// With ContactSolverSettings::accelerateGaussSeidel, each sweep is followed by a conjugate
+/// step, the nonsmooth nonlinear conjugate gradient method (NNCG) of Silcowitz, Niebe and
+/// Erleben ("A nonsmooth nonlinear conjugate gradient method for interactive contact force
+/// problems", The Visual Computer 26, 2010): the sweep's change of the forces is taken as the
+/// residual, and the forces move further along `p <- change + beta p`, `beta` the
+/// Fletcher-Reeves ratio of the squared changes (restarting when it exceeds 1). A load carried
+/// through a long chain of contacts (a pile's weight down to its floor) then converges in a few
+/// tens of sweeps instead of hundreds.
+///
+/// The solver copies an island into contiguous local arrays (rows with their inverse diagonal,
+/// bodies in order of first use) before sweeping, so a sweep streams through memory; the
+/// buffers are kept between calls (no allocation once they reached the largest island).
 class GaussSeidelSolver {
  public:
-  /// Solves the rows listed in @p island. @return the number of sweeps done.
-  static int solve(std::span<const std::uint32_t> island, std::span<ContactConstraint> rows,
-                   std::span<SolverBody> bodies, const ContactSolverSettings& settings);
+  /// Solves the rows listed in @p island (forces into the rows, velocities into @p bodies).
+  /// @return the number of sweeps done.
+  int solve(std::span<const std::uint32_t> island, std::span<ContactConstraint> rows,
+            std::span<SolverBody> bodies, const ContactSolverSettings& settings);
+
+  /// Makes room for islands of up to @p rows rows among @p bodies bodies.
+  void reserve(std::size_t bodies, std::size_t rows);
 
   /// The same method on an LCP given directly: @p matrix (row-major, n x n, symmetric positive
   /// semi-definite, positive diagonal) and @p slack, `b - c` at zero force; @p forces holds the
-  /// starting forces and receives the result. @return the number of sweeps done.
+  /// starting forces and receives the result. No acceleration. @return the number of sweeps.
   static int solveMatrix(std::span<const real> matrix, std::span<const real> slack,
                          std::span<real> forces, const ContactSolverSettings& settings);
+
+ private:
+  /// A row in the island's local numbering, with what a sweep needs precomputed (one cache
+  /// line in double precision).
+  struct Row {
+    std::uint32_t a;  // local body indices
+    std::uint32_t b;
+    Vector2 normal;
+    real inverseMassA;
+    real inverseMassB;
+    real target;         // c
+    real response;       // A_kk
+    real inverseScaled;  // relaxation / A_kk
+  };
+  /// The turning part of a row, kept apart: islands where no contact has a lever arm (circles
+  /// and borders) never read it.
+  struct Turning {
+    real armA;  // w = n . (vB - vA) + armB omegaB - armA omegaA
+    real armB;
+    real turnA;  // change of omegaA per unit force: -armA / IA
+    real turnB;  // of omegaB: armB / IB
+  };
+  /// A body's velocity in the island's local numbering.
+  struct Body {
+    Vector2 v;
+    real omega;
+  };
+  struct SweepResult {
+    real largestChange = 0;  // the largest |change of a force| * A_kk: a velocity
+    real squaredNorm = 0;    // the sum of the squared changes of the forces
+  };
+
+  void gather(std::span<const std::uint32_t> island, std::span<const ContactConstraint> rows,
+              std::span<const SolverBody> bodies, real relaxation);
+  /// One sweep over the rows, forward or backward; records each row's change in changes_.
+  /// Without turning, the rows' lever arms are all zero and are not read.
+  template <bool backward, bool turning>
+  SweepResult sweep();
+  /// Moves every force by beta * direction (kept non-negative), updates the velocities, and
+  /// makes the next direction.
+  template <bool turning>
+  void conjugateStep(real beta);
+  /// Adds the velocities caused by a change of row @p p's force.
+  template <bool turning>
+  void apply(std::size_t p, real change);
+  void scatter(std::span<const std::uint32_t> island, std::span<ContactConstraint> rows,
+               std::span<SolverBody> bodies);
+
+  std::vector<Row> rows_;
+  std::vector<Turning> turning_;  // filled only when a row of the island has a lever arm
+  bool turningIsland_ = false;
+  std::vector<Body> bodies_;
+  std::vector<real> forces_;
+  std::vector<real> changes_;              // each force's change in the last sweep
+  std::vector<real> direction_;            // the conjugate direction p
+  std::vector<std::uint32_t> globalBody_;  // local body -> index in the caller's bodies, or none
+  std::vector<std::uint32_t> localBody_;   // caller's body -> local index, or none
 };
 
 }  // namespace thyrix

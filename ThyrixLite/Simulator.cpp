@@ -71,6 +71,7 @@ void Simulator::reserveContacts(std::size_t count) {
   baraff_.reserve(
       std::min(count, static_cast<std::size_t>(std::max(settings_.baraffMaxContacts, 0))));
   lastForces_.reserve(count);
+  gaussSeidel_.reserve(objects.size(), count);
   if (hasMultiBodies_) {  // general islands: their matrix and the objects' sides
     const std::size_t island = std::min(count, std::size_t{256});
     for (auto* buffer : {&denseSlack_, &denseForces_, &ownerMagnitudes_}) buffer->reserve(island);

@@ -6,6 +6,7 @@
 #include <ThyrixLite/BroadPhase.h>
 #include <ThyrixLite/ContactForceCache.h>
 #include <ThyrixLite/ContactSolver.h>
+#include <ThyrixLite/GaussSeidelSolver.h>
 #include <ThyrixLite/Integrator.h>
 #include <ThyrixLite/Islands.h>
 #include <ThyrixLite/MultiBodyObject.h>
@@ -160,6 +161,7 @@ class Simulator : public World {
   std::vector<ContactConstraint> rows_;
   Islands islands_;
   BaraffSolver baraff_;
+  GaussSeidelSolver gaussSeidel_;
   ContactForceCache lastForces_;
 
   // Multi-body objects (articulated agents): their islands are solved on an explicit matrix.

@@ -8,6 +8,14 @@
 #include <cmath>
 
 namespace thyrix {
+namespace {
+
+/// A circle that is its own body (not a part of a composed body).
+bool centredCircle(const Primitive* primitive, const PhysicalObject* object) {
+  return primitive == object && primitive->shapeType() == ShapeType::Circle;
+}
+
+}  // namespace
 
 void Simulator::solveContacts() {
   statistics_.islands = statistics_.solvedIslands = 0;
@@ -46,8 +54,11 @@ void Simulator::solveContacts() {
     row.a = c.bodyA;
     row.b = c.bodyB;
     row.normal = c.normal;
-    row.armA = cross(c.point - c.objectA->r, c.normal);
-    row.armB = cross(c.point - c.objectB->r, c.normal);
+    // A circle on its own turns about its centre, which the normal goes through: its lever
+    // arm is exactly zero (the cross product would give round-off), and its contacts never
+    // turn it.
+    row.armA = centredCircle(c.primitiveA, c.objectA) ? 0 : cross(c.point - c.objectA->r, c.normal);
+    row.armB = centredCircle(c.primitiveB, c.objectB) ? 0 : cross(c.point - c.objectB->r, c.normal);
     // Overlap: separate at a fraction of the depth per step; gap: approach at most by the gap.
     row.target = c.depth > 0 ? correction * c.depth / dt : c.depth / dt;
     row.force = 0;
@@ -208,6 +219,6 @@ void Simulator::solveIsland(std::span<const std::uint32_t> island) {
     }
   }
   statistics_.gaussSeidelSweeps +=
-      static_cast<std::size_t>(GaussSeidelSolver::solve(island, rows_, bodies_, settings_));
+      static_cast<std::size_t>(gaussSeidel_.solve(island, rows_, bodies_, settings_));
 }
 }  // namespace thyrix
