@@ -1,7 +1,5 @@
 #include <ThyrixLite/Islands.h>
 
-#include <numeric>
-
 namespace thyrix {
 
 std::uint32_t Islands::find(std::uint32_t body) {
@@ -21,11 +19,18 @@ void Islands::reserve(std::size_t bodies, std::size_t rows) {
   contacts_.reserve(rows);
 }
 
-void Islands::build(std::span<const ContactConstraint> rows,
-                    std::span<const std::uint8_t> movable) {
+void Islands::build(std::span<const ContactConstraint> rows, std::span<const std::uint8_t> movable,
+                    std::span<const std::uint32_t> bodies) {
+  constexpr std::uint32_t none = ~0u;
   const auto bodyCount = static_cast<std::uint32_t>(movable.size());
-  parent_.resize(bodyCount);
-  std::iota(parent_.begin(), parent_.end(), 0u);
+  if (parent_.size() < bodyCount) {
+    parent_.resize(bodyCount);
+    islandOfBody_.resize(bodyCount);
+  }
+  for (const std::uint32_t body : bodies) {
+    parent_[body] = body;
+    islandOfBody_[body] = none;
+  }
   for (const ContactConstraint& row : rows) {
     if (!movable[row.a] || !movable[row.b]) continue;
     std::uint32_t rootA = find(row.a);
@@ -36,8 +41,6 @@ void Islands::build(std::span<const ContactConstraint> rows,
   }
 
   // Number the islands in order of their first contact (the contact order is reproducible).
-  constexpr std::uint32_t none = ~0u;
-  islandOfBody_.assign(bodyCount, none);
   islandOfRow_.resize(rows.size());
   std::uint32_t islandCount = 0;
   for (std::size_t k = 0; k < rows.size(); ++k) {

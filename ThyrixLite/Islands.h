@@ -15,8 +15,10 @@ namespace thyrix {
 /// contact and list their contacts in increasing order, so the result is reproducible.
 class Islands {
  public:
-  /// Groups @p rows; @p movable tells which bodies can move.
-  void build(std::span<const ContactConstraint> rows, std::span<const std::uint8_t> movable);
+  /// Groups @p rows; @p movable tells which bodies can move; @p bodies lists every body the
+  /// rows name (each once), the only ones read (the work is proportional to the rows).
+  void build(std::span<const ContactConstraint> rows, std::span<const std::uint8_t> movable,
+             std::span<const std::uint32_t> bodies);
 
   /// Makes room for @p bodies bodies and @p rows contacts without further allocation.
   void reserve(std::size_t bodies, std::size_t rows);

@@ -39,6 +39,8 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
   reserveFor(gridBoxes_, gridShapes_.size() + shapes);
   reserveFor(bodies_, objects.size() + added.size());
   reserveFor(movable_, objects.size() + added.size());
+  reserveFor(touched_, objects.size() + added.size());
+  reserveFor(touchedStamp_, objects.size() + added.size());
   reserveFor(multiBodies_, objects.size() + added.size());
   reserveFor(objectContactStart_, objects.size() + added.size() + 1);
 }
@@ -57,6 +59,7 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
   }
   bodies_.push_back({});
   movable_.push_back(0);
+  touchedStamp_.push_back(0);
   multiBodies_.push_back(dynamic_cast<MultiBodyObject*>(&object));
   hasMultiBodies_ = hasMultiBodies_ || multiBodies_.back() != nullptr;
   object.onRegistered(*this);

@@ -156,8 +156,11 @@ class Simulator : public World {
   std::vector<ContactInfo> objectContacts_;        // every object's contacts, object by object
   std::vector<std::uint32_t> objectContactStart_;  // where each object's contacts begin
 
-  std::vector<SolverBody> bodies_;
+  std::vector<SolverBody> bodies_;  // valid for the bodies in touched_ only
   std::vector<std::uint8_t> movable_;
+  std::vector<std::uint32_t> touched_;       // bodies of this step's rows, each once
+  std::vector<std::uint64_t> touchedStamp_;  // stamp_ when a body was last put in touched_
+  std::uint64_t stamp_ = 0;
   std::vector<ContactConstraint> rows_;
   Islands islands_;
   BaraffSolver baraff_;

@@ -36,7 +36,14 @@ void Simulator::solveContacts() {
     return;
   }
 
-  for (std::uint32_t i = 0; i < objects.size(); ++i) {
+  // Only the bodies that rows touch take part (the others keep their velocities): a world of
+  // many bodies with few contacts pays for its contacts, not for its size.
+  ++stamp_;
+  touched_.clear();
+  const auto touch = [this](std::uint32_t i) {
+    if (touchedStamp_[i] == stamp_) return;
+    touchedStamp_[i] = stamp_;
+    touched_.push_back(i);
     const PhysicalObject& object = objects[i];
     // A multi-body object answers for itself (general islands): zero here, so the rigid
     // formulas ignore its sides.
@@ -45,7 +52,12 @@ void Simulator::solveContacts() {
             ? SolverBody{}
             : SolverBody{object.v, object.omega, object.inverseMass(), object.inverseInertia()};
     movable_[i] = movable(i) ? 1 : 0;
+  };
+  for (const GlobalContactInfo& c : contacts.items_) {
+    touch(c.bodyA);
+    touch(c.bodyB);
   }
+  for (const std::uint32_t owner : internalOwner_) touch(owner);
   const real correction = settings_.penetrationCorrection;
   rows_.resize(contacts.size() + internal_.size());
   for (std::size_t k = 0; k < contacts.size(); ++k) {
@@ -68,7 +80,7 @@ void Simulator::solveContacts() {
     rows_[contacts.size() + j] = {
         internalOwner_[j], internalOwner_[j], {}, 0, 0, internal_[j].target, 0};
 
-  islands_.build(rows_, movable_);
+  islands_.build(rows_, movable_, touched_);
   statistics_.islands = islands_.count();
   for (std::size_t i = 0; i < islands_.count(); ++i) {
     const auto island = islands_.island(i);
@@ -82,7 +94,7 @@ void Simulator::solveContacts() {
       solveIsland(island);
   }
 
-  for (std::size_t i = 0; i < objects.size(); ++i) {
+  for (const std::uint32_t i : touched_) {
     PhysicalObject& object = objects[i];
     if (object.fixed || multiBodies_[i] != nullptr) continue;
     object.v = bodies_[i].v;
