@@ -132,6 +132,12 @@ class Simulator : public World {
   void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void solveIsland(std::span<const std::uint32_t> island);
   void solveGeneralIsland(std::span<const std::uint32_t> island);
+  /// Shape @p shape is a circle that is its own body (not a part of a composed body): its
+  /// contacts' normals go through its centre. Reads the shape table, not the objects.
+  [[nodiscard]] bool centredCircle(std::uint32_t shape, const Primitive* primitive,
+                                   const PhysicalObject* object) const {
+    return shapes_[shape].type == ShapeType::Circle && primitive == object;
+  }
   [[nodiscard]] bool movable(std::uint32_t body) const {
     return multiBodies_[body] != nullptr || !objects[body].fixed;
   }

@@ -8,14 +8,6 @@
 #include <cmath>
 
 namespace thyrix {
-namespace {
-
-/// A circle that is its own body (not a part of a composed body).
-bool centredCircle(const Primitive* primitive, const PhysicalObject* object) {
-  return primitive == object && primitive->shapeType() == ShapeType::Circle;
-}
-
-}  // namespace
 
 void Simulator::solveContacts() {
   statistics_.islands = statistics_.solvedIslands = 0;
@@ -69,8 +61,12 @@ void Simulator::solveContacts() {
     // A circle on its own turns about its centre, which the normal goes through: its lever
     // arm is exactly zero (the cross product would give round-off), and its contacts never
     // turn it.
-    row.armA = centredCircle(c.primitiveA, c.objectA) ? 0 : cross(c.point - c.objectA->r, c.normal);
-    row.armB = centredCircle(c.primitiveB, c.objectB) ? 0 : cross(c.point - c.objectB->r, c.normal);
+    row.armA = centredCircle(c.shapeA, c.primitiveA, c.objectA)
+                   ? 0
+                   : cross(c.point - c.objectA->r, c.normal);
+    row.armB = centredCircle(c.shapeB, c.primitiveB, c.objectB)
+                   ? 0
+                   : cross(c.point - c.objectB->r, c.normal);
     // Overlap: separate at a fraction of the depth per step; gap: approach at most by the gap.
     row.target = c.depth > 0 ? correction * c.depth / dt : c.depth / dt;
     row.force = 0;
@@ -198,6 +194,7 @@ void Simulator::solveGeneralIsland(std::span<const std::uint32_t> island) {
 }
 
 void Simulator::updateTactileSensors() {
+  if (sensingPrimitives_.empty()) return;  // no tactile sensor in the world
   for (Primitive* primitive : sensingPrimitives_) primitive->tactile_.clear();
   for (const GlobalContactInfo& c : contacts.items_) {
     if (c.force <= 0) continue;
