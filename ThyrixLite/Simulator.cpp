@@ -81,6 +81,7 @@ void Simulator::reserveContacts(std::size_t count) {
     denseMatrix_.reserve(island * island);
     response_.reserve(island * island);
     sides_.reserve(2 * island);
+    sideOrder_.reserve(2 * island);
     ownerForces_.reserve(2 * island);
     ownerRows_.reserve(2 * island);
     internal_.reserve(island);

@@ -184,6 +184,7 @@ class Simulator : public World {
     MultiBodyObject::UnitForce force;
   };
   std::vector<Side> sides_;
+  std::vector<std::uint32_t> sideOrder_;  // sides_ sorted by owner
   std::vector<MultiBodyObject::UnitForce> ownerForces_;
   std::vector<real> ownerMagnitudes_;
   std::vector<std::uint32_t> ownerRows_;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace thyrix {
 
@@ -137,18 +138,21 @@ void Simulator::solveGeneralIsland(std::span<const std::uint32_t> island) {
   }
   for (const Side& side : sides_)
     denseSlack_[side.row] += multiBodies_[side.owner]->velocityAlong(side.force);
+  // The sides grouped by object (objects in index order, each one's sides in row order), to
+  // visit each object once with all its sides.
+  sideOrder_.resize(sides_.size());
+  std::iota(sideOrder_.begin(), sideOrder_.end(), 0u);
+  std::sort(sideOrder_.begin(), sideOrder_.end(), [this](std::uint32_t s, std::uint32_t t) {
+    return sides_[s].owner != sides_[t].owner ? sides_[s].owner < sides_[t].owner : s < t;
+  });
   const auto forEachOwner = [this](auto&& visit) {
-    for (std::size_t s = 0; s < sides_.size(); ++s) {
-      const std::uint32_t owner = sides_[s].owner;
-      bool seen = false;
-      for (std::size_t t = 0; t < s && !seen; ++t) seen = sides_[t].owner == owner;
-      if (seen) continue;
+    for (std::size_t begin = 0, end = 0; begin < sideOrder_.size(); begin = end) {
+      const std::uint32_t owner = sides_[sideOrder_[begin]].owner;
       ownerForces_.clear();
       ownerRows_.clear();
-      for (std::size_t t = s; t < sides_.size(); ++t) {
-        if (sides_[t].owner != owner) continue;
-        ownerForces_.push_back(sides_[t].force);
-        ownerRows_.push_back(sides_[t].row);
+      for (end = begin; end < sideOrder_.size() && sides_[sideOrder_[end]].owner == owner; ++end) {
+        ownerForces_.push_back(sides_[sideOrder_[end]].force);
+        ownerRows_.push_back(sides_[sideOrder_[end]].row);
       }
       visit(*multiBodies_[owner]);
     }
