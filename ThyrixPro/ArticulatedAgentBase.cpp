@@ -241,17 +241,25 @@ void ArticulatedAgentBase::clearServo(int i) {
 }
 
 void ArticulatedAgentBase::applyLinkForce(int b, Vector2 force, Vector2 worldPoint) {
+  // Called for every link in every step by a program that applies weights: the checks are
+  // inline, and the messages are built out of line only when one fails.
+  if (b < base || b >= linkCount() || !std::isfinite(force.x) || !std::isfinite(force.y) ||
+      !std::isfinite(worldPoint.x) || !std::isfinite(worldPoint.y)) [[unlikely]]
+    refuseLinkForce(b, force, worldPoint);
+  // A wrench about the body's centre of mass, as ArticulatedBody::solve() takes it.
+  Vector3& wrench = linkWrenches_[index(b + 1)];
+  wrench.x += cross(worldPoint - body_.centerOfMass(b), force);
+  wrench.y += force.x;
+  wrench.z += force.y;
+}
+
+void ArticulatedAgentBase::refuseLinkForce(int b, Vector2 force, Vector2 worldPoint) const {
   if (b < base || b >= linkCount())
     throw InvalidArgument(
         "ArticulatedAgentBase.body",
         "must be in [-1, " + std::to_string(linkCount()) + ") (got " + std::to_string(b) + ")");
   requireFinite(force, "ArticulatedAgentBase.force");
   requireFinite(worldPoint, "ArticulatedAgentBase.worldPoint");
-  // A wrench about the body's centre of mass, as ArticulatedBody::solve() takes it.
-  Vector3& wrench = linkWrenches_[index(b + 1)];
-  wrench.x += cross(worldPoint - body_.centerOfMass(b), force);
-  wrench.y += force.x;
-  wrench.z += force.y;
 }
 
 // --- proprioception --------------------------------------------------------------------------

@@ -253,6 +253,8 @@ class ArticulatedAgentBase : public MultiBodyObject {
   ArticulatedAgentBase(const std::vector<ArticulatedBasePart>& baseParts, Layout layout);
   static Layout describe(const std::vector<ArticulatedBasePart>& baseParts,
                          const std::vector<ArticulatedLimb>& limbs);
+  /// Throws the InvalidArgument that applyLinkForce() owes for these arguments, if any.
+  void refuseLinkForce(int b, Vector2 force, Vector2 worldPoint) const;
 
   std::vector<std::unique_ptr<Primitive>> baseParts_;
   std::vector<Vector2> partPositions_;  ///< each base part's centre relative to the centre of mass

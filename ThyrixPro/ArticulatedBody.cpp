@@ -171,47 +171,59 @@ void ArticulatedBody::forwardKinematics() {
   inertiasStale_ = true;
 }
 
-// --- articulated inertias --------------------------------------------------------------------
+// --- articulated inertias ---------------------------------------------------------------------
 
-void ArticulatedBody::computeArticulatedInertias() {
-  // Start from each body's own inertia about its frame origin (ALGORITHMS.md section 2).
+void ArticulatedBody::startArticulatedInertias() {
+  // Each body's own inertia about its frame origin (ALGORITHMS.md section 2); the inward pass
+  // then adds its children's articulated terms.
   articulatedInertia_[0] = SymmetricMatrix3::diagonal(baseInertia_, baseMass_, baseMass_);
   for (std::size_t i = 0; i < links_.size(); ++i)
     articulatedInertia_[i + 1] =
         spatialInertia(links_[i].mass, links_[i].inertia, comOffset_[i + 1]);
-
-  // Leaves to root (reverse index order visits children before parents). Featherstone 2008,
-  // section 7.3 and Table 7.1: U_i = I^A_i S_i, d_i = S_i^T U_i, and the parent receives
-  // I^a_i = X_i^T (I^A_i - U_i U_i^T / d_i) X_i. A damped joint (torque -c_i qdot_i) has
-  // S_i^T f_i = tau_i - c_i qdot_i, so its rate solves (d_i + c_i) qdot_i = u_i - U_i^T v'_i and
-  // d_i + c_i replaces d_i in both places.
-  for (std::size_t i = links_.size(); i-- > 0;) {
-    const SymmetricMatrix3& da = articulatedInertia_[i + 1];
-    // S = (1, 0, 0) picks the first column and the top-left entry.
-    const Vector3 u{da.xx, da.xy, da.xz};
-    const real c = jointDamping_[i];
-    const real inverseD = 1 / (da.xx + c);
-    jointForceDirection_[i] = u;
-    inverseJointInertia_[i] = inverseD;
-    // The first row of I^A - U U^T / (d + c) is U^T (1 - d / (d + c)) = U^T c / (d + c): zero
-    // for an undamped joint, which transmits no moment about its own axis; a damped joint
-    // passes that fraction of its stiffness on. Written this way the undamped row is exactly
-    // zero, not a difference of equal numbers.
-    SymmetricMatrix3 transmitted;
-    transmitted.xx = u.x * c * inverseD;
-    transmitted.xy = u.y * c * inverseD;
-    transmitted.xz = u.z * c * inverseD;
-    transmitted.yy = da.yy - u.y * u.y * inverseD;
-    transmitted.yz = da.yz - u.y * u.z * inverseD;
-    transmitted.zz = da.zz - u.z * u.z * inverseD;
-    SymmetricMatrix3& parent = articulatedInertia_[parentSlot_[i]];
-    parent = parent + translateInertiaBack(transmitted, shift_[i]);
-  }
-  inertiasStale_ = false;
 }
 
-void ArticulatedBody::updateIfStale() {
-  if (inertiasStale_) computeArticulatedInertias();
+inline void ArticulatedBody::articulateLink(std::size_t i) {
+  // Featherstone 2008, section 7.3 and Table 7.1: U_i = I^A_i S_i, d_i = S_i^T U_i, and the
+  // parent receives I^a_i = X_i^T (I^A_i - U_i U_i^T / d_i) X_i. A damped joint (torque
+  // -c_i qdot_i) has S_i^T f_i = tau_i - c_i qdot_i, so its rate solves
+  // (d_i + c_i) qdot_i = u_i - U_i^T v'_i and d_i + c_i replaces d_i in both places.
+  const SymmetricMatrix3& da = articulatedInertia_[i + 1];
+  // S = (1, 0, 0) picks the first column and the top-left entry.
+  const Vector3 u{da.xx, da.xy, da.xz};
+  const real c = jointDamping_[i];
+  const real inverseD = 1 / (da.xx + c);
+  jointForceDirection_[i] = u;
+  inverseJointInertia_[i] = inverseD;
+  // The first row of I^A - U U^T / (d + c) is U^T (1 - d / (d + c)) = U^T c / (d + c): zero
+  // for an undamped joint, which transmits no moment about its own axis; a damped joint
+  // passes that fraction of its stiffness on. Written this way the undamped row is exactly
+  // zero, not a difference of equal numbers.
+  SymmetricMatrix3 transmitted;
+  transmitted.xx = u.x * c * inverseD;
+  transmitted.xy = u.y * c * inverseD;
+  transmitted.xz = u.z * c * inverseD;
+  transmitted.yy = da.yy - u.y * u.y * inverseD;
+  transmitted.yz = da.yz - u.y * u.z * inverseD;
+  transmitted.zz = da.zz - u.z * u.z * inverseD;
+  SymmetricMatrix3& parent = articulatedInertia_[parentSlot_[i]];
+  parent = parent + translateInertiaBack(transmitted, shift_[i]);
+}
+
+inline void ArticulatedBody::passBias(std::size_t i) {
+  // Table 7.1, second loop: u_i = tau_i - S_i^T p^A_i, and the parent receives
+  // p^a_i = X_i^T (p^A_i + U_i u_i / (d_i + c_i)).
+  const Vector3& pa = bias_[i + 1];
+  const real ui = jointTorque_[i] - pa.x;
+  jointBias_[i] = ui;
+  const Vector3 passed = pa + jointForceDirection_[i] * (ui * inverseJointInertia_[i]);
+  bias_[parentSlot_[i]] += translateForceBack(passed, shift_[i]);
+}
+
+void ArticulatedBody::computeArticulatedInertias() {
+  startArticulatedInertias();
+  // Leaves to root: reverse index order visits children before parents.
+  for (std::size_t i = links_.size(); i-- > 0;) articulateLink(i);
+  inertiasStale_ = false;
 }
 
 // --- solve and respond -----------------------------------------------------------------------
@@ -224,7 +236,6 @@ void ArticulatedBody::solve(std::span<const real> jointTorques,
   if (!externalWrenches.empty() && externalWrenches.size() != origin_.size())
     throw InvalidArgument("ArticulatedBody.externalWrenches",
                           sizeProblem(origin_.size(), externalWrenches.size()));
-  updateIfStale();
   out.resize(linkCount());
 
   // p^A_i starts as -f_ext,i about the frame origin (Table 7.1 without the v x* I v term): the
@@ -271,8 +282,7 @@ void ArticulatedBody::respond(std::span<const TestForce> forces, std::span<const
                           sizeProblem(forces.size(), magnitudes.size()));
   for (const TestForce& force : forces) checkTestForce(force);
   // The articulated inertias do not depend on the forces (Kokkevis 2004): only the bias terms
-  // are recomputed, from the test forces alone.
-  updateIfStale();
+  // are recomputed, from the test forces alone (and the inertias once, if stale).
   out.resize(linkCount());
   std::fill(bias_.begin(), bias_.end(), Vector3{});
   std::fill(jointTorque_.begin(), jointTorque_.end(), real(0));
@@ -282,14 +292,19 @@ void ArticulatedBody::respond(std::span<const TestForce> forces, std::span<const
 }
 
 void ArticulatedBody::biasAndOutwardPasses(Output& out) {
-  // Inward pass, leaves to root (Table 7.1, second loop): u_i = tau_i - S_i^T p^A_i, and the
-  // parent receives p^a_i = X_i^T (p^A_i + U_i u_i / (d_i + c_i)).
-  for (std::size_t i = links_.size(); i-- > 0;) {
-    const Vector3& pa = bias_[i + 1];
-    const real ui = jointTorque_[i] - pa.x;
-    jointBias_[i] = ui;
-    const Vector3 passed = pa + jointForceDirection_[i] * (ui * inverseJointInertia_[i]);
-    bias_[parentSlot_[i]] += translateForceBack(passed, shift_[i]);
+  // Leaves to root. The articulated inertias and the bias forces are both built from the
+  // leaves, and link i's bias needs only its own U_i and d_i: when the configuration has
+  // changed, one sweep does both, so the two dependency chains (each link waits for its
+  // children) run side by side instead of one after the other.
+  if (inertiasStale_) {
+    startArticulatedInertias();
+    for (std::size_t i = links_.size(); i-- > 0;) {
+      articulateLink(i);
+      passBias(i);
+    }
+    inertiasStale_ = false;
+  } else {
+    for (std::size_t i = links_.size(); i-- > 0;) passBias(i);
   }
 
   // The free-floating base: nothing acts on it from outside the tree, so 0 = D^A_0 v_0 + p^A_0

@@ -215,7 +215,8 @@ class ArticulatedBody {
   /// The inward pass quantities that depend only on the configuration (Featherstone 2008,
   /// section 7.3): each body's articulated inertia `D^A_i` about its frame origin in world
   /// axes, `U_i = D^A_i S_i` and `d_i = S_i^T U_i` (plus the joint damping `c_i`). Cached:
-  /// solve() and respond() call it only when the state or a damping has changed since.
+  /// solve() and respond() recompute them, in the same sweep as their own inward pass, only
+  /// when the state or a damping has changed since.
   void computeArticulatedInertias();
 
   /// The velocities from joint torques and external wrenches, in O(N).
@@ -258,11 +259,17 @@ class ArticulatedBody {
   }
 
  private:
-  void updateIfStale();
   void checkTestForce(const TestForce& force) const;
   void depositTestForce(const TestForce& force, real magnitude);
-  /// The bias pass (leaves to root) from bias_ and jointTorque_, then the outward pass (root to
-  /// leaves), writing out. bias_ holds `-f_ext` about each frame origin on entry.
+  /// Sets each body's articulated inertia to its own inertia, before the inward pass.
+  void startArticulatedInertias();
+  /// Link @p i's step of the inward inertia pass: U_i, 1 / (d_i + c_i), the parent's D^A term.
+  void articulateLink(std::size_t i);
+  /// Link @p i's step of the inward bias pass: u_i and the parent's p^A term.
+  void passBias(std::size_t i);
+  /// The bias pass (leaves to root) from bias_ and jointTorque_, with the articulated inertias
+  /// if they are stale, then the outward pass (root to leaves), writing out. bias_ holds
+  /// `-f_ext` about each frame origin on entry.
   void biasAndOutwardPasses(Output& out);
 
   real baseMass_;
