@@ -263,10 +263,16 @@ class ArticulatedBody {
   void depositTestForce(const TestForce& force, real magnitude);
   /// Sets each body's articulated inertia to its own inertia, before the inward pass.
   void startArticulatedInertias();
-  /// Link @p i's step of the inward inertia pass: U_i, 1 / (d_i + c_i), the parent's D^A term.
-  void articulateLink(std::size_t i);
-  /// Link @p i's step of the inward bias pass: u_i and the parent's p^A term.
-  void passBias(std::size_t i);
+  /// Link @p i's step of the inward inertia pass, given its articulated inertia @p da: sets
+  /// terms_[i] and returns the inertia it passes to its parent (about the parent's origin).
+  SymmetricMatrix3 articulateJoint(std::size_t i, const SymmetricMatrix3& da);
+  /// Link @p i's step of the inward bias pass, given its bias @p pa: sets u_i and returns the
+  /// bias it passes to its parent (about the parent's origin).
+  Vector3 passBias(std::size_t i, const Vector3& pa);
+  /// The inward sweep, leaves to root: the bias pass from bias_ and jointTorque_, and the
+  /// articulated inertias too when @p withInertias.
+  template <bool withInertias>
+  void inwardPass();
   /// The bias pass (leaves to root) from bias_ and jointTorque_, with the articulated inertias
   /// if they are stale, then the outward pass (root to leaves), writing out. bias_ holds
   /// `-f_ext` about each frame origin on entry.
@@ -295,11 +301,18 @@ class ArticulatedBody {
   // Per link (joint) i.
   std::vector<std::size_t> parentSlot_;  ///< the parent's slot in the per-body arrays
   std::vector<Vector2> shift_;  ///< origin minus the parent's origin: X_i is a pure translation
-  std::vector<Vector3> jointForceDirection_;  ///< U_i = D^A_i S_i
-  std::vector<real> inverseJointInertia_;     ///< 1 / (d_i + c_i), d_i = S_i^T D^A_i S_i
-  std::vector<real> jointDamping_;            ///< c_i, the implicit joint damping
-  std::vector<real> jointTorque_;             ///< tau_i for the current pass
-  std::vector<real> jointBias_;               ///< u_i = tau_i - S_i^T p^A_i
+  /// Per joint, the coefficients the inertia pass leaves for the bias and outward passes:
+  /// Table 7.1's U_i and d_i folded with X_i (see ArticulatedBody.cpp for the algebra).
+  struct JointTerms {
+    real inverseD = 0;  ///< 1 / (d_i + c_i), d_i = S_i^T D^A_i S_i
+    real alpha = 0;     ///< (c_i - g_i) / (d_i + c_i), g_i = r_i x (linear part of U_i)
+    real gamma = 0;     ///< (d_i + g_i) / (d_i + c_i)
+    Vector2 beta;       ///< the linear part of U_i = D^A_i S_i, over d_i + c_i
+  };
+  std::vector<JointTerms> terms_;   ///< per joint, from the inertia pass
+  std::vector<real> jointDamping_;  ///< c_i, the implicit joint damping
+  std::vector<real> jointTorque_;   ///< tau_i for the current pass
+  std::vector<real> jointBias_;     ///< u_i = tau_i - S_i^T p^A_i
 };
 
 }  // namespace thyrix
