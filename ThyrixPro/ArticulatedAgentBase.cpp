@@ -184,11 +184,12 @@ void ArticulatedAgentBase::placeShapes() {
     part.alpha = baseAngle + partAngles_[k];
   }
   // Each link's capsule runs from its joint to its tip: its centre is half way along the axis.
+  // The kinematics' (cos, sin) of the link's angle goes with it, so the simulator does not
+  // compute them again for the capsule's end points (Primitive::direction()).
   for (std::size_t i = 0; i < linkShapes_.size(); ++i) {
     const int link = static_cast<int>(i);
     CappedRectangle& shape = *linkShapes_[i];
-    shape.r = body_.toWorld(link, {shape.halfLength(), 0});
-    shape.alpha = body_.angle(link);
+    shape.place(body_.toWorld(link, {shape.halfLength(), 0}), body_.angle(link), body_.axis(link));
   }
   r = body_.basePosition();
   alpha = baseAngle;

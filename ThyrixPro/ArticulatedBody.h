@@ -200,6 +200,8 @@ class ArticulatedBody {
   [[nodiscard]] Vector2 origin(int b) const { return origin_[b + 1]; }
   /// The world angle of body @p b's frame (rad).
   [[nodiscard]] real angle(int b) const { return angle_[b + 1]; }
+  /// The unit vector of body @p b's frame x axis in world axes: `(cos, sin)` of angle(b).
+  [[nodiscard]] Vector2 axis(int b) const { return axis_[b + 1]; }
   /// The world position of body @p b's centre of mass (m).
   [[nodiscard]] Vector2 centerOfMass(int b) const { return origin_[b + 1] + comOffset_[b + 1]; }
   /// The world position of the point @p local of body @p b's frame (m).

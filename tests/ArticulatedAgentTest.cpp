@@ -682,6 +682,27 @@ TEST(ArticulatedAgentRules, NeighboursNeverCollideOthersDo) {
   EXPECT_EQ(Agent::bodyOf(agent.basePart(1)), -1);
 }
 
+TEST(ArticulatedAgentRules, LinkCapsulesCarryTheDirectionOfTheirAngle) {
+  // The agent places each link's capsule with the kinematics' (cos, sin) of its angle, which
+  // the simulator reuses for the capsule's end points (Primitive::direction()): it must be
+  // exactly what cos and sin of the angle give, and follow an angle set by hand.
+  Simulator simulator(real(0.01));
+  Agent& agent = simulator.registerObject(makeArm(3, real(0.4)));
+  agent.setJointTorque(1, real(0.5));
+  for (int step = 0; step < 5; ++step) simulator.advanceTime();
+  for (int i = 0; i < agent.linkCount(); ++i) {
+    CappedRectangle& shape = agent.linkShape(i);
+    ASSERT_NE(shape.alpha, 0);
+    const Vector2 direction = shape.direction();
+    EXPECT_EQ(direction.x, std::cos(shape.alpha));
+    EXPECT_EQ(direction.y, std::sin(shape.alpha));
+  }
+  CappedRectangle& shape = agent.linkShape(2);
+  shape.alpha = real(2.5);
+  EXPECT_EQ(shape.direction().x, std::cos(real(2.5)));
+  EXPECT_EQ(shape.direction().y, std::sin(real(2.5)));
+}
+
 TEST(ArticulatedAgentRules, DrawsPartsLinksAndJoints) {
   struct Counter : GUI {
     int circles = 0, capsules = 0;
