@@ -127,6 +127,8 @@ ArticulatedAgentBase::ArticulatedAgentBase(const std::vector<ArticulatedBasePart
   servoTorques_.assign(n, 0);
   limitTorques_.assign(n, 0);
   linkWrenches_.assign(n + 1, Vector3{});
+  for (std::size_t i = 0; i < n; ++i)
+    if (layout.links[i].hasLimits) limitedJoints_.push_back(static_cast<int>(i));
 
   // The shapes: each knows its body (ArticulatedComponent), and is attached without a fixed
   // pose (rigid = false): placeShapes() puts it where the kinematics say.
@@ -233,25 +235,16 @@ void ArticulatedAgentBase::setServoTarget(int i, real target, real gain) {
   requireFinite(target, "ArticulatedAgentBase.servoTarget");
   requirePositive(gain, "ArticulatedAgentBase.servoGain");
   servoTargets_[index(i)] = target;
+  if (servoGains_[index(i)] == 0) ++servoCount_;
   servoGains_[index(i)] = gain;
+  servosChanged_ = true;
 }
 
 void ArticulatedAgentBase::clearServo(int i) {
   checkJoint(i);
+  if (servoGains_[index(i)] > 0) --servoCount_;
   servoGains_[index(i)] = 0;
-}
-
-void ArticulatedAgentBase::applyLinkForce(int b, Vector2 force, Vector2 worldPoint) {
-  // Called for every link in every step by a program that applies weights: the checks are
-  // inline, and the messages are built out of line only when one fails.
-  if (b < base || b >= linkCount() || !std::isfinite(force.x) || !std::isfinite(force.y) ||
-      !std::isfinite(worldPoint.x) || !std::isfinite(worldPoint.y)) [[unlikely]]
-    refuseLinkForce(b, force, worldPoint);
-  // A wrench about the body's centre of mass, as ArticulatedBody::solve() takes it.
-  Vector3& wrench = linkWrenches_[index(b + 1)];
-  wrench.x += cross(worldPoint - body_.centerOfMass(b), force);
-  wrench.y += force.x;
-  wrench.z += force.y;
+  servosChanged_ = true;
 }
 
 void ArticulatedAgentBase::refuseLinkForce(int b, Vector2 force, Vector2 worldPoint) const {

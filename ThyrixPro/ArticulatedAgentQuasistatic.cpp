@@ -29,15 +29,26 @@ void ArticulatedAgentQuasistatic::computeDerivativesWithoutContacts() {
   // damping c = k dt joins d_i in the articulated-body algorithm (ArticulatedBody), and
   // k (q* - q) is an ordinary torque. The joint's equation becomes (d + k dt) qdot = k (q* - q)
   // + ..., which cannot overshoot, whatever k (ALGORITHMS.md section 2, pitfalls). The damping
-  // is set only where it differs: it rarely changes, and a change costs the body a new
-  // inertia pass (which a changed configuration needs anyway).
+  // is constant between changes of the servos (or of the time step): it is set only then, and
+  // only where it differs, since a change costs the body a new inertia pass.
   const real dt = timestep();
-  for (int i = 0; i < linkCount(); ++i) {
-    const std::size_t j = index(i);
-    const real gain = servoGains_[j];
-    if (body_.jointDamping(i) != gain * dt) body_.setJointDamping(i, gain * dt);
-    torques_[j] = jointTorques_[j];
-    if (gain > 0) torques_[j] += gain * (servoTargets_[j] - body_.jointAngle(i));
+  if (servosChanged_ || dt != dampingTimestep_) {
+    for (int i = 0; i < linkCount(); ++i) {
+      const real damping = servoGains_[index(i)] * dt;
+      if (body_.jointDamping(i) != damping) body_.setJointDamping(i, damping);
+    }
+    servosChanged_ = false;
+    dampingTimestep_ = dt;
+  }
+  std::span<const real> torques = jointTorques_;
+  if (servoCount_ > 0) {
+    for (int i = 0; i < linkCount(); ++i) {
+      const std::size_t j = index(i);
+      const real gain = servoGains_[j];
+      torques_[j] = jointTorques_[j];
+      if (gain > 0) torques_[j] += gain * (servoTargets_[j] - body_.jointAngle(i));
+    }
+    torques = torques_;
   }
   // The base's force acts at its centre of mass, as for any PhysicalObject (applyForce() has put
   // the moment of an off-centre force in externalTorque). The accumulated wrenches are handed
@@ -49,7 +60,7 @@ void ArticulatedAgentQuasistatic::computeDerivativesWithoutContacts() {
   // applyConstraintForces() saves them before changing them. The last step's rates are kept
   // for the limits (a swap of buffers, not a copy).
   std::swap(lastRates_, velocities_.jointRates);
-  body_.solve(torques_, linkWrenches_, velocities_);
+  body_.solve(torques, linkWrenches_, velocities_);
   freeSaved_ = false;
   v = velocities_.linearVelocity(base);
   omega = velocities_.angularVelocity(base);
@@ -131,9 +142,8 @@ void ArticulatedAgentQuasistatic::applyConstraintForces(std::span<const UnitForc
 
 void ArticulatedAgentQuasistatic::collectInternalConstraints(real dt,
                                                              std::vector<InternalConstraint>& out) {
-  for (int i = 0; i < linkCount(); ++i) {
+  for (const int i : limitedJoints_) {
     const ArticulatedLink& link = body_.link(i);
-    if (!link.hasLimits) continue;
     const real q = body_.jointAngle(i);
     // How far the joint may turn this step toward each limit: by its free rate, or by its last
     // step's rate (contacts may keep driving it, and their forces are not known yet), plus the
@@ -148,11 +158,15 @@ void ArticulatedAgentQuasistatic::collectInternalConstraints(real dt,
 }
 
 void ArticulatedAgentQuasistatic::integrate(real dt) {
-  // The servos' torques with the final rates, for proprioception, before q moves.
-  for (int i = 0; i < linkCount(); ++i) {
-    const std::size_t j = index(i);
-    servoTorques_[j] =
-        servoGains_[j] * (servoTargets_[j] - body_.jointAngle(i) - dt * velocities_.jointRate(i));
+  // The servos' torques with the final rates, for proprioception, before q moves; once more
+  // after the last servo is cleared, which sets them all to zero.
+  if (servoCount_ > 0 || servoTorquesSet_) {
+    for (int i = 0; i < linkCount(); ++i) {
+      const std::size_t j = index(i);
+      servoTorques_[j] =
+          servoGains_[j] * (servoTargets_[j] - body_.jointAngle(i) - dt * velocities_.jointRate(i));
+    }
+    servoTorquesSet_ = servoCount_ > 0;
   }
   body_.integrate(velocities_, dt);  // a fixed base stays put
   placeShapes();

@@ -65,7 +65,8 @@ ArticulatedBody::ArticulatedBody(real baseMass, real baseInertia,
   if (links_.size() >= static_cast<std::size_t>(INT_MAX))
     throw InvalidArgument("ArticulatedBody.links",
                           "must be fewer than INT_MAX (got " + std::to_string(links_.size()) + ")");
-  for (int i = 0; i < linkCount(); ++i) links_[i].validate(i);
+  // linkCount() counts the joint angles, which are sized below.
+  for (std::size_t i = 0; i < links_.size(); ++i) links_[i].validate(static_cast<int>(i));
 
   // Every work array is sized here, once: the passes below only overwrite them.
   const std::size_t n = links_.size();

@@ -133,7 +133,7 @@ class ArticulatedBody {
   // --- description ---------------------------------------------------------------------------
 
   /// The number of links N (joints).
-  [[nodiscard]] int linkCount() const { return static_cast<int>(links_.size()); }
+  [[nodiscard]] int linkCount() const { return static_cast<int>(q_.size()); }
   /// The links, in index order.
   [[nodiscard]] std::span<const ArticulatedLink> links() const { return links_; }
   /// Link @p i.

@@ -521,6 +521,19 @@ TEST_P(ArticulatedAgentTest, StiffServoConvergesWithoutOscillation) {
   for (int i = 0; i < 6; ++i) EXPECT_NEAR(arm.servoTorque(i), real(-0.5), real(1e-3));
   arm.clearServo(2);
   EXPECT_FALSE(arm.hasServo(2));
+  // A cleared servo leaves its joint free from the next step: no damping, no servo torque; the
+  // others keep theirs. Clearing them all frees every joint.
+  chain.advanceTime();
+  EXPECT_EQ(arm.articulatedBody().jointDamping(2), 0);
+  EXPECT_EQ(arm.servoTorque(2), 0);
+  EXPECT_EQ(arm.articulatedBody().jointDamping(3), real(1e9) * chain.timestep());
+  EXPECT_NE(arm.servoTorque(3), 0);
+  for (int i = 0; i < 6; ++i) arm.clearServo(i);
+  chain.advanceTime();
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_EQ(arm.articulatedBody().jointDamping(i), 0);
+    EXPECT_EQ(arm.servoTorque(i), 0);
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
