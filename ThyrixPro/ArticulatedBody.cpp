@@ -190,15 +190,6 @@ void ArticulatedBody::forwardKinematics() {
 // inertia pass computes them once, and each bias and outward pass, which are chains of
 // dependent operations from link to link, does only a few multiply-adds per link.
 
-void ArticulatedBody::startArticulatedInertias() {
-  // Each body's own inertia about its frame origin (ALGORITHMS.md section 2); the inward pass
-  // then adds its children's articulated terms.
-  articulatedInertia_[0] = SymmetricMatrix3::diagonal(baseInertia_, baseMass_, baseMass_);
-  for (std::size_t i = 0; i < links_.size(); ++i)
-    articulatedInertia_[i + 1] =
-        spatialInertia(links_[i].mass, links_[i].inertia, comOffset_[i + 1]);
-}
-
 inline SymmetricMatrix3 ArticulatedBody::articulateJoint(std::size_t i,
                                                          const SymmetricMatrix3& da) {
   // Featherstone 2008, section 7.3 and Table 7.1: U_i = I^A_i S_i, d_i = S_i^T U_i, and the
@@ -239,11 +230,21 @@ inline Vector3 ArticulatedBody::passBias(std::size_t i, const Vector3& pa) {
 }
 
 template <bool withInertias>
-void ArticulatedBody::inwardPass() {
+void ArticulatedBody::inwardPass(std::span<const Vector3> externalWrenches) {
   // Leaves to root: reverse index order visits children before parents. A link's terms go to
   // its parent's slot, except when the parent is the next link visited (slot i: within a
   // limb, the usual case): they are then carried to it in registers. Each link waits for its
-  // children, and a round trip through memory would lengthen every link's step.
+  // children, and a round trip through memory would lengthen every link's step. So a body's
+  // slot holds only what its other children have passed (and, in bias_, respond()'s test
+  // forces); its own terms are added when it is visited: its inertia about its frame origin
+  // (ALGORITHMS.md section 2), and p^A_i starts as -f_ext,i about the frame origin (Table 7.1
+  // without the v x* I v term), the wrench being given about the centre of mass.
+  const auto ownBias = [&](std::size_t slot) {
+    return externalWrenches.empty() ? Vector3{}
+                                    : -translateForceBack(externalWrenches[slot], comOffset_[slot]);
+  };
+  if constexpr (withInertias)
+    std::fill(articulatedInertia_.begin(), articulatedInertia_.end(), SymmetricMatrix3{});
   SymmetricMatrix3 inertiaCarried;
   Vector3 biasCarried;
   for (std::size_t i = links_.size(); i-- > 0;) {
@@ -251,7 +252,9 @@ void ArticulatedBody::inwardPass() {
     const std::size_t parent = parentSlot_[i];
     const bool carry = parent == i;
     if constexpr (withInertias) {
-      const SymmetricMatrix3 da = articulatedInertia_[self] + inertiaCarried;
+      const ArticulatedLink& link = links_[i];
+      const SymmetricMatrix3 da = spatialInertia(link.mass, link.inertia, comOffset_[self]) +
+                                  articulatedInertia_[self] + inertiaCarried;
       articulatedInertia_[self] = da;
       const SymmetricMatrix3 passed = articulateJoint(i, da);
       if (carry) {
@@ -261,7 +264,7 @@ void ArticulatedBody::inwardPass() {
         inertiaCarried = {};
       }
     }
-    const Vector3 passed = passBias(i, bias_[self] + biasCarried);
+    const Vector3 passed = passBias(i, ownBias(self) + bias_[self] + biasCarried);
     if (carry) {
       biasCarried = passed;
     } else {
@@ -270,16 +273,17 @@ void ArticulatedBody::inwardPass() {
     }
   }
   // The first link is always carried (slot 0 is the base): the base gets its last terms here.
-  articulatedInertia_[0] = articulatedInertia_[0] + inertiaCarried;
-  bias_[0] += biasCarried;
+  if constexpr (withInertias)
+    articulatedInertia_[0] = SymmetricMatrix3::diagonal(baseInertia_, baseMass_, baseMass_) +
+                             articulatedInertia_[0] + inertiaCarried;
+  bias_[0] = ownBias(0) + bias_[0] + biasCarried;
 }
 
 void ArticulatedBody::computeArticulatedInertias() {
-  startArticulatedInertias();
   // The bias pass comes along (its result is not used): one sweep, and no second copy of it.
   std::fill(bias_.begin(), bias_.end(), Vector3{});
   std::fill(jointTorque_.begin(), jointTorque_.end(), real(0));
-  inwardPass<true>();
+  inwardPass<true>({});
   inertiasStale_ = false;
 }
 
@@ -295,19 +299,13 @@ void ArticulatedBody::solve(std::span<const real> jointTorques,
                           sizeProblem(origin_.size(), externalWrenches.size()));
   out.resize(linkCount());
 
-  // p^A_i starts as -f_ext,i about the frame origin (Table 7.1 without the v x* I v term): the
-  // wrench is given about the centre of mass, so its force adds the moment c x f.
-  if (externalWrenches.empty()) {
-    std::fill(bias_.begin(), bias_.end(), Vector3{});
-  } else {
-    for (std::size_t b = 0; b < bias_.size(); ++b)
-      bias_[b] = -translateForceBack(externalWrenches[b], comOffset_[b]);
-  }
+  // The inward pass adds the wrenches to the bias terms as it visits the bodies.
+  std::fill(bias_.begin(), bias_.end(), Vector3{});
   if (jointTorques.empty())
     std::fill(jointTorque_.begin(), jointTorque_.end(), real(0));
   else
     std::copy(jointTorques.begin(), jointTorques.end(), jointTorque_.begin());
-  biasAndOutwardPasses(out);
+  biasAndOutwardPasses(externalWrenches, out);
 }
 
 void ArticulatedBody::checkTestForce(const TestForce& force) const {
@@ -345,19 +343,18 @@ void ArticulatedBody::respond(std::span<const TestForce> forces, std::span<const
   std::fill(jointTorque_.begin(), jointTorque_.end(), real(0));
   for (std::size_t k = 0; k < forces.size(); ++k)
     depositTestForce(forces[k], magnitudes.empty() ? real(1) : magnitudes[k]);
-  biasAndOutwardPasses(out);
+  biasAndOutwardPasses({}, out);
 }
 
-void ArticulatedBody::biasAndOutwardPasses(Output& out) {
+void ArticulatedBody::biasAndOutwardPasses(std::span<const Vector3> externalWrenches, Output& out) {
   // Leaves to root. The articulated inertias and the bias forces are both built from the
   // leaves, and link i's bias needs only its own terms: when the configuration has changed,
   // one sweep does both, so the two dependency chains run side by side.
   if (inertiasStale_) {
-    startArticulatedInertias();
-    inwardPass<true>();
+    inwardPass<true>(externalWrenches);
     inertiasStale_ = false;
   } else {
-    inwardPass<false>();
+    inwardPass<false>(externalWrenches);
   }
 
   // The free-floating base: nothing acts on it from outside the tree, so 0 = D^A_0 v_0 + p^A_0

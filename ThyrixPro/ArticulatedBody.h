@@ -263,22 +263,21 @@ class ArticulatedBody {
  private:
   void checkTestForce(const TestForce& force) const;
   void depositTestForce(const TestForce& force, real magnitude);
-  /// Sets each body's articulated inertia to its own inertia, before the inward pass.
-  void startArticulatedInertias();
   /// Link @p i's step of the inward inertia pass, given its articulated inertia @p da: sets
   /// terms_[i] and returns the inertia it passes to its parent (about the parent's origin).
   SymmetricMatrix3 articulateJoint(std::size_t i, const SymmetricMatrix3& da);
   /// Link @p i's step of the inward bias pass, given its bias @p pa: sets u_i and returns the
   /// bias it passes to its parent (about the parent's origin).
   Vector3 passBias(std::size_t i, const Vector3& pa);
-  /// The inward sweep, leaves to root: the bias pass from bias_ and jointTorque_, and the
-  /// articulated inertias too when @p withInertias.
+  /// The inward sweep, leaves to root: the bias pass from @p externalWrenches (as solve()
+  /// takes them, or empty), the forces already in bias_ and jointTorque_, and the articulated
+  /// inertias too when @p withInertias.
   template <bool withInertias>
-  void inwardPass();
-  /// The bias pass (leaves to root) from bias_ and jointTorque_, with the articulated inertias
-  /// if they are stale, then the outward pass (root to leaves), writing out. bias_ holds
-  /// `-f_ext` about each frame origin on entry.
-  void biasAndOutwardPasses(Output& out);
+  void inwardPass(std::span<const Vector3> externalWrenches);
+  /// The bias pass (leaves to root) from @p externalWrenches (or none), the forces in bias_ and
+  /// jointTorque_, with the articulated inertias if they are stale, then the outward pass (root
+  /// to leaves), writing @p out.
+  void biasAndOutwardPasses(std::span<const Vector3> externalWrenches, Output& out);
 
   real baseMass_;
   real baseInertia_;
