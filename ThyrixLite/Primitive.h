@@ -5,6 +5,7 @@
 #include <ThyrixLite/PhysicalObject.h>
 #include <ThyrixLite/TactileSensors.h>
 
+#include <cmath>
 #include <cstdint>
 
 namespace thyrix {
@@ -53,6 +54,26 @@ class Primitive : public PhysicalObject {
   /// Adds a contact force of magnitude @p force at @p worldPoint to the sensor under it.
   void touch(Vector2 worldPoint, real force);
 
+  /// The unit vector of the primitive's x axis, `(cos alpha, sin alpha)`: a capsule's axis.
+  /// Cached with the angle it belongs to, so it costs a cosine and a sine only when `alpha`
+  /// has changed since the last call or place().
+  [[nodiscard]] Vector2 direction() {
+    if (alpha != directionAngle_) {
+      direction_ = {std::cos(alpha), std::sin(alpha)};
+      directionAngle_ = alpha;
+    }
+    return direction_;
+  }
+  /// Sets `r` to @p position and `alpha` to @p angle, whose `(cos, sin)` the caller already
+  /// has as @p direction (an owner placing its parts from its own kinematics): direction()
+  /// then returns it without recomputing it.
+  void place(Vector2 position, real angle, Vector2 direction) {
+    r = position;
+    alpha = angle;
+    direction_ = direction;
+    directionAngle_ = angle;
+  }
+
   /// Moves `r` and `alpha` to follow the owner (no-op for a standalone primitive).
   void followOwner() {
     if (owner_ == this || !rigid_) return;
@@ -83,6 +104,8 @@ class Primitive : public PhysicalObject {
   Vector2 localPosition_;
   real localAngle_ = 0;
   bool rigid_ = true;
+  Vector2 direction_{1, 0};  // (cos, sin) of directionAngle_
+  real directionAngle_ = 0;
 };
 
 }  // namespace thyrix

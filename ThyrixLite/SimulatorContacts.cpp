@@ -36,7 +36,7 @@ void Simulator::updateGeometry() {
         upper = g.p0 + Vector2{g.radius, g.radius};
         break;
       case ShapeType::Capsule: {
-        const Vector2 axis = Vector2{primitive.halfLength(), 0}.rotated(primitive.alpha);
+        const Vector2 axis = primitive.direction() * primitive.halfLength();
         g.p0 = primitive.r - axis;
         g.p1 = primitive.r + axis;
         lower = Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} -

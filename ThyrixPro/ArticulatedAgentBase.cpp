@@ -127,6 +127,8 @@ ArticulatedAgentBase::ArticulatedAgentBase(const std::vector<ArticulatedBasePart
   servoTorques_.assign(n, 0);
   limitTorques_.assign(n, 0);
   linkWrenches_.assign(n + 1, Vector3{});
+  for (std::size_t i = 0; i < n; ++i)
+    if (layout.links[i].hasLimits) limitedJoints_.push_back(static_cast<int>(i));
 
   // The shapes: each knows its body (ArticulatedComponent), and is attached without a fixed
   // pose (rigid = false): placeShapes() puts it where the kinematics say.
@@ -184,11 +186,12 @@ void ArticulatedAgentBase::placeShapes() {
     part.alpha = baseAngle + partAngles_[k];
   }
   // Each link's capsule runs from its joint to its tip: its centre is half way along the axis.
+  // The kinematics' (cos, sin) of the link's angle goes with it, so the simulator does not
+  // compute them again for the capsule's end points (Primitive::direction()).
   for (std::size_t i = 0; i < linkShapes_.size(); ++i) {
     const int link = static_cast<int>(i);
     CappedRectangle& shape = *linkShapes_[i];
-    shape.r = body_.toWorld(link, {shape.halfLength(), 0});
-    shape.alpha = body_.angle(link);
+    shape.place(body_.toWorld(link, {shape.halfLength(), 0}), body_.angle(link), body_.axis(link));
   }
   r = body_.basePosition();
   alpha = baseAngle;
@@ -232,26 +235,25 @@ void ArticulatedAgentBase::setServoTarget(int i, real target, real gain) {
   requireFinite(target, "ArticulatedAgentBase.servoTarget");
   requirePositive(gain, "ArticulatedAgentBase.servoGain");
   servoTargets_[index(i)] = target;
+  if (servoGains_[index(i)] == 0) ++servoCount_;
   servoGains_[index(i)] = gain;
+  servosChanged_ = true;
 }
 
 void ArticulatedAgentBase::clearServo(int i) {
   checkJoint(i);
+  if (servoGains_[index(i)] > 0) --servoCount_;
   servoGains_[index(i)] = 0;
+  servosChanged_ = true;
 }
 
-void ArticulatedAgentBase::applyLinkForce(int b, Vector2 force, Vector2 worldPoint) {
+void ArticulatedAgentBase::refuseLinkForce(int b, Vector2 force, Vector2 worldPoint) const {
   if (b < base || b >= linkCount())
     throw InvalidArgument(
         "ArticulatedAgentBase.body",
         "must be in [-1, " + std::to_string(linkCount()) + ") (got " + std::to_string(b) + ")");
   requireFinite(force, "ArticulatedAgentBase.force");
   requireFinite(worldPoint, "ArticulatedAgentBase.worldPoint");
-  // A wrench about the body's centre of mass, as ArticulatedBody::solve() takes it.
-  Vector3& wrench = linkWrenches_[index(b + 1)];
-  wrench.x += cross(worldPoint - body_.centerOfMass(b), force);
-  wrench.y += force.x;
-  wrench.z += force.y;
 }
 
 // --- proprioception --------------------------------------------------------------------------

@@ -18,6 +18,7 @@
 #include <ThyrixPro/ArticulatedLimb.h>
 #include <ThyrixPro/LinkContactInfo.h>
 
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <span>
@@ -154,7 +155,18 @@ class ArticulatedAgentBase : public MultiBodyObject {
   /// (-1 the base, else a link) for the next step; reset after it, like `externalForce`.
   /// @throws InvalidArgument naming "ArticulatedAgentBase.body" unless a body of this agent,
   /// or ".force" / ".worldPoint" unless finite
-  void applyLinkForce(int b, Vector2 force, Vector2 worldPoint);
+  void applyLinkForce(int b, Vector2 force, Vector2 worldPoint) {
+    // Inline: a program applying weights calls it for every link in every step. The messages
+    // are built out of line, only when a check fails.
+    if (b < base || b >= linkCount() || !std::isfinite(force.x) || !std::isfinite(force.y) ||
+        !std::isfinite(worldPoint.x) || !std::isfinite(worldPoint.y)) [[unlikely]]
+      refuseLinkForce(b, force, worldPoint);
+    // A wrench about the body's centre of mass, as ArticulatedBody::solve() takes it.
+    Vector3& wrench = linkWrenches_[index(b + 1)];
+    wrench.x += cross(worldPoint - body_.centerOfMass(b), force);
+    wrench.y += force.x;
+    wrench.z += force.y;
+  }
 
   // --- proprioception and poses --------------------------------------------------------------
 
@@ -242,17 +254,23 @@ class ArticulatedAgentBase : public MultiBodyObject {
   std::vector<real> jointTorques_;  ///< the effector torques, per joint (N m)
   std::vector<real> servoTargets_;  ///< per joint (rad)
   std::vector<real> servoGains_;    ///< per joint (N m/rad), 0: no servo
+  int servoCount_ = 0;              ///< how many joints have a servo
+  bool servosChanged_ = false;      ///< a servo was set or cleared since the last step
   std::vector<real> servoTorques_;  ///< the servo torques of the last step (N m)
   std::vector<real> limitTorques_;  ///< the limit torques of the last step (N m)
   /// The wrenches of applyLinkForce() per body, base first (body b at b + 1), about each centre
   /// of mass: `(torque, fx, fy)`.
   std::vector<Vector3> linkWrenches_;
+  /// The joints that have limits, in index order.
+  std::vector<int> limitedJoints_;
 
  private:
   struct Layout;
   ArticulatedAgentBase(const std::vector<ArticulatedBasePart>& baseParts, Layout layout);
   static Layout describe(const std::vector<ArticulatedBasePart>& baseParts,
                          const std::vector<ArticulatedLimb>& limbs);
+  /// Throws the InvalidArgument that applyLinkForce() owes for these arguments, if any.
+  void refuseLinkForce(int b, Vector2 force, Vector2 worldPoint) const;
 
   std::vector<std::unique_ptr<Primitive>> baseParts_;
   std::vector<Vector2> partPositions_;  ///< each base part's centre relative to the centre of mass

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace thyrix {
 
@@ -11,8 +12,7 @@ ArticulatedAgentQuasistatic::ArticulatedAgentQuasistatic(
       free_(linkCount()),
       response_(linkCount()),
       torques_(index(linkCount()), 0),
-      lastRates_(index(linkCount()), 0),
-      wrenches_(index(linkCount()) + 1, Vector3{}) {
+      lastRates_(index(linkCount()), 0) {
   // Room for a few constraints per body; more only grows the buffer to the largest count seen.
   tests_.reserve(index(2 * linkCount() + 8));
 }
@@ -28,33 +28,54 @@ void ArticulatedAgentQuasistatic::computeDerivativesWithoutContacts() {
   // The servo tau = k (q* - q - dt qdot) with the step's final qdot, solved implicitly: the
   // damping c = k dt joins d_i in the articulated-body algorithm (ArticulatedBody), and
   // k (q* - q) is an ordinary torque. The joint's equation becomes (d + k dt) qdot = k (q* - q)
-  // + ..., which cannot overshoot, whatever k (ALGORITHMS.md section 2, pitfalls).
+  // + ..., which cannot overshoot, whatever k (ALGORITHMS.md section 2, pitfalls). The damping
+  // is constant between changes of the servos (or of the time step): it is set only then, and
+  // only where it differs, since a change costs the body a new inertia pass.
   const real dt = timestep();
-  for (int i = 0; i < linkCount(); ++i) {
-    const std::size_t j = index(i);
-    const real gain = servoGains_[j];
-    body_.setJointDamping(i, gain * dt);
-    torques_[j] = jointTorques_[j];
-    if (gain > 0) torques_[j] += gain * (servoTargets_[j] - body_.jointAngle(i));
+  if (servosChanged_ || dt != dampingTimestep_) {
+    for (int i = 0; i < linkCount(); ++i) {
+      const real damping = servoGains_[index(i)] * dt;
+      if (body_.jointDamping(i) != damping) body_.setJointDamping(i, damping);
+    }
+    servosChanged_ = false;
+    dampingTimestep_ = dt;
+  }
+  std::span<const real> torques = jointTorques_;
+  if (servoCount_ > 0) {
+    for (int i = 0; i < linkCount(); ++i) {
+      const std::size_t j = index(i);
+      const real gain = servoGains_[j];
+      torques_[j] = jointTorques_[j];
+      if (gain > 0) torques_[j] += gain * (servoTargets_[j] - body_.jointAngle(i));
+    }
+    torques = torques_;
   }
   // The base's force acts at its centre of mass, as for any PhysicalObject (applyForce() has put
-  // the moment of an off-centre force in externalTorque).
-  std::copy(linkWrenches_.begin(), linkWrenches_.end(), wrenches_.begin());
-  wrenches_[0] += Vector3{externalTorque, externalForce.x, externalForce.y};
-  body_.solve(torques_, wrenches_, free_);
+  // the moment of an off-centre force in externalTorque). The accumulated wrenches are handed
+  // to the solve as they are, and cleared after it.
+  linkWrenches_[0] += Vector3{externalTorque, externalForce.x, externalForce.y};
 
-  // Until the contact solver says otherwise (it leaves an agent without constraints alone),
-  // the final velocities are the free ones. The last step's rates are kept for the limits.
-  std::copy(velocities_.jointRates.begin(), velocities_.jointRates.end(), lastRates_.begin());
-  std::copy(free_.velocities.begin(), free_.velocities.end(), velocities_.velocities.begin());
-  std::copy(free_.jointRates.begin(), free_.jointRates.end(), velocities_.jointRates.begin());
+  // The free velocities are solved straight into the final ones: until the contact solver says
+  // otherwise (it leaves an agent without constraints alone), they are the same, and
+  // applyConstraintForces() saves them before changing them. The last step's rates are kept
+  // for the limits (a swap of buffers, not a copy).
+  std::swap(lastRates_, velocities_.jointRates);
+  body_.solve(torques, linkWrenches_, velocities_);
+  freeSaved_ = false;
   v = velocities_.linearVelocity(base);
   omega = velocities_.angularVelocity(base);
 
   externalForce = {};
   externalTorque = 0;
   std::fill(linkWrenches_.begin(), linkWrenches_.end(), Vector3{});
-  std::fill(limitTorques_.begin(), limitTorques_.end(), real(0));
+  if (limitsActed_) {
+    std::fill(limitTorques_.begin(), limitTorques_.end(), real(0));
+    limitsActed_ = false;
+  }
+}
+
+const ArticulatedBody::Output& ArticulatedAgentQuasistatic::freeVelocities() const {
+  return freeSaved_ ? free_ : velocities_;
 }
 
 ArticulatedBody::TestForce ArticulatedAgentQuasistatic::toTestForce(const UnitForce& force) const {
@@ -70,7 +91,7 @@ void ArticulatedAgentQuasistatic::convert(std::span<const UnitForce> forces) {
 }
 
 real ArticulatedAgentQuasistatic::velocityAlong(const UnitForce& force) const {
-  return body_.velocityAlong(free_, toTestForce(force));
+  return body_.velocityAlong(freeVelocities(), toTestForce(force));
 }
 
 void ArticulatedAgentQuasistatic::responseMatrix(std::span<const UnitForce> forces,
@@ -98,26 +119,36 @@ void ArticulatedAgentQuasistatic::applyConstraintForces(std::span<const UnitForc
   convert(forces);
   // The responses are linear in the forces: one pass with every force scaled gives their sum.
   body_.respond(tests_, magnitudes, response_);
+  if (!freeSaved_) {
+    // The first change of this step's velocities: keep the free ones, which velocityAlong()
+    // reads and to which a later call adds its response again.
+    std::copy(velocities_.velocities.begin(), velocities_.velocities.end(),
+              free_.velocities.begin());
+    std::copy(velocities_.jointRates.begin(), velocities_.jointRates.end(),
+              free_.jointRates.begin());
+    freeSaved_ = true;
+  }
   std::copy(free_.velocities.begin(), free_.velocities.end(), velocities_.velocities.begin());
   std::copy(free_.jointRates.begin(), free_.jointRates.end(), velocities_.jointRates.begin());
   velocities_.addScaled(response_, 1);
   v = velocities_.linearVelocity(base);
   omega = velocities_.angularVelocity(base);
-  for (std::size_t k = 0; k < forces.size(); ++k)
-    if (forces[k].primitive == nullptr)
-      limitTorques_[index(forces[k].joint)] += forces[k].torque * magnitudes[k];
+  for (std::size_t k = 0; k < forces.size(); ++k) {
+    if (forces[k].primitive != nullptr) continue;
+    limitTorques_[index(forces[k].joint)] += forces[k].torque * magnitudes[k];
+    limitsActed_ = true;
+  }
 }
 
 void ArticulatedAgentQuasistatic::collectInternalConstraints(real dt,
                                                              std::vector<InternalConstraint>& out) {
-  for (int i = 0; i < linkCount(); ++i) {
+  for (const int i : limitedJoints_) {
     const ArticulatedLink& link = body_.link(i);
-    if (!link.hasLimits) continue;
     const real q = body_.jointAngle(i);
     // How far the joint may turn this step toward each limit: by its free rate, or by its last
     // step's rate (contacts may keep driving it, and their forces are not known yet), plus the
     // margin. A row that turns out not to be needed costs one LCP row and gets no torque.
-    const real freeRate = free_.jointRate(i);
+    const real freeRate = freeVelocities().jointRate(i);
     const real lastRate = lastRates_[index(i)];
     const real down = dt * std::max({real(0), -freeRate, -lastRate}) + limitMargin;
     const real up = dt * std::max({real(0), freeRate, lastRate}) + limitMargin;
@@ -127,11 +158,15 @@ void ArticulatedAgentQuasistatic::collectInternalConstraints(real dt,
 }
 
 void ArticulatedAgentQuasistatic::integrate(real dt) {
-  // The servos' torques with the final rates, for proprioception, before q moves.
-  for (int i = 0; i < linkCount(); ++i) {
-    const std::size_t j = index(i);
-    servoTorques_[j] =
-        servoGains_[j] * (servoTargets_[j] - body_.jointAngle(i) - dt * velocities_.jointRate(i));
+  // The servos' torques with the final rates, for proprioception, before q moves; once more
+  // after the last servo is cleared, which sets them all to zero.
+  if (servoCount_ > 0 || servoTorquesSet_) {
+    for (int i = 0; i < linkCount(); ++i) {
+      const std::size_t j = index(i);
+      servoTorques_[j] =
+          servoGains_[j] * (servoTargets_[j] - body_.jointAngle(i) - dt * velocities_.jointRate(i));
+    }
+    servoTorquesSet_ = servoCount_ > 0;
   }
   body_.integrate(velocities_, dt);  // a fixed base stays put
   placeShapes();

@@ -74,12 +74,18 @@ class ArticulatedAgentQuasistatic : public ArticulatedAgentBase {
  private:
   [[nodiscard]] ArticulatedBody::TestForce toTestForce(const UnitForce& force) const;
   void convert(std::span<const UnitForce> forces);
+  /// This step's velocities without contacts (u0): velocities_ until the contact solver
+  /// changes them, free_ after.
+  [[nodiscard]] const ArticulatedBody::Output& freeVelocities() const;
 
-  ArticulatedBody::Output free_;                   ///< velocities without contacts (u0)
-  ArticulatedBody::Output response_;               ///< a test force's response
-  std::vector<real> torques_;                      ///< this step's joint torques, servos included
-  std::vector<real> lastRates_;                    ///< the last step's final joint rates
-  std::vector<Vector3> wrenches_;                  ///< this step's external wrenches, base first
+  ArticulatedBody::Output free_;      ///< u0, once saved (freeSaved_)
+  bool freeSaved_ = false;            ///< whether free_ holds this step's u0
+  bool limitsActed_ = false;          ///< whether a limit torque is non-zero
+  bool servoTorquesSet_ = false;      ///< whether servoTorques_ may hold a non-zero torque
+  real dampingTimestep_ = 0;          ///< the time step the joint dampings were set for (s)
+  ArticulatedBody::Output response_;  ///< a test force's response
+  std::vector<real> torques_;         ///< this step's joint torques with the servos', if any
+  std::vector<real> lastRates_;       ///< the last step's final joint rates
   std::vector<ArticulatedBody::TestForce> tests_;  ///< the simulator's unit forces, converted
 };
 

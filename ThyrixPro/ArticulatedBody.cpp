@@ -65,7 +65,8 @@ ArticulatedBody::ArticulatedBody(real baseMass, real baseInertia,
   if (links_.size() >= static_cast<std::size_t>(INT_MAX))
     throw InvalidArgument("ArticulatedBody.links",
                           "must be fewer than INT_MAX (got " + std::to_string(links_.size()) + ")");
-  for (int i = 0; i < linkCount(); ++i) links_[i].validate(i);
+  // linkCount() counts the joint angles, which are sized below.
+  for (std::size_t i = 0; i < links_.size(); ++i) links_[i].validate(static_cast<int>(i));
 
   // Every work array is sized here, once: the passes below only overwrite them.
   const std::size_t n = links_.size();
@@ -83,8 +84,7 @@ ArticulatedBody::ArticulatedBody(real baseMass, real baseInertia,
   bias_.assign(n + 1, Vector3{});
   originVelocity_.assign(n + 1, Vector3{});
   shift_.assign(n, Vector2{});
-  jointForceDirection_.assign(n, Vector3{});
-  inverseJointInertia_.assign(n, 0);
+  terms_.assign(n, JointTerms{});
   jointDamping_.assign(n, 0);
   jointTorque_.assign(n, 0);
   jointBias_.assign(n, 0);
@@ -171,49 +171,6 @@ void ArticulatedBody::forwardKinematics() {
   inertiasStale_ = true;
 }
 
-// --- articulated inertias --------------------------------------------------------------------
-
-void ArticulatedBody::computeArticulatedInertias() {
-  // Start from each body's own inertia about its frame origin (ALGORITHMS.md section 2).
-  articulatedInertia_[0] = SymmetricMatrix3::diagonal(baseInertia_, baseMass_, baseMass_);
-  for (std::size_t i = 0; i < links_.size(); ++i)
-    articulatedInertia_[i + 1] =
-        spatialInertia(links_[i].mass, links_[i].inertia, comOffset_[i + 1]);
-
-  // Leaves to root (reverse index order visits children before parents). Featherstone 2008,
-  // section 7.3 and Table 7.1: U_i = I^A_i S_i, d_i = S_i^T U_i, and the parent receives
-  // I^a_i = X_i^T (I^A_i - U_i U_i^T / d_i) X_i. A damped joint (torque -c_i qdot_i) has
-  // S_i^T f_i = tau_i - c_i qdot_i, so its rate solves (d_i + c_i) qdot_i = u_i - U_i^T v'_i and
-  // d_i + c_i replaces d_i in both places.
-  for (std::size_t i = links_.size(); i-- > 0;) {
-    const SymmetricMatrix3& da = articulatedInertia_[i + 1];
-    // S = (1, 0, 0) picks the first column and the top-left entry.
-    const Vector3 u{da.xx, da.xy, da.xz};
-    const real c = jointDamping_[i];
-    const real inverseD = 1 / (da.xx + c);
-    jointForceDirection_[i] = u;
-    inverseJointInertia_[i] = inverseD;
-    // The first row of I^A - U U^T / (d + c) is U^T (1 - d / (d + c)) = U^T c / (d + c): zero
-    // for an undamped joint, which transmits no moment about its own axis; a damped joint
-    // passes that fraction of its stiffness on. Written this way the undamped row is exactly
-    // zero, not a difference of equal numbers.
-    SymmetricMatrix3 transmitted;
-    transmitted.xx = u.x * c * inverseD;
-    transmitted.xy = u.y * c * inverseD;
-    transmitted.xz = u.z * c * inverseD;
-    transmitted.yy = da.yy - u.y * u.y * inverseD;
-    transmitted.yz = da.yz - u.y * u.z * inverseD;
-    transmitted.zz = da.zz - u.z * u.z * inverseD;
-    SymmetricMatrix3& parent = articulatedInertia_[parentSlot_[i]];
-    parent = parent + translateInertiaBack(transmitted, shift_[i]);
-  }
-  inertiasStale_ = false;
-}
-
-void ArticulatedBody::updateIfStale() {
-  if (inertiasStale_) computeArticulatedInertias();
-}
-
 // --- solve and respond -----------------------------------------------------------------------
 
 void ArticulatedBody::solve(std::span<const real> jointTorques,
@@ -224,22 +181,15 @@ void ArticulatedBody::solve(std::span<const real> jointTorques,
   if (!externalWrenches.empty() && externalWrenches.size() != origin_.size())
     throw InvalidArgument("ArticulatedBody.externalWrenches",
                           sizeProblem(origin_.size(), externalWrenches.size()));
-  updateIfStale();
   out.resize(linkCount());
 
-  // p^A_i starts as -f_ext,i about the frame origin (Table 7.1 without the v x* I v term): the
-  // wrench is given about the centre of mass, so its force adds the moment c x f.
-  if (externalWrenches.empty()) {
-    std::fill(bias_.begin(), bias_.end(), Vector3{});
-  } else {
-    for (std::size_t b = 0; b < bias_.size(); ++b)
-      bias_[b] = -translateForceBack(externalWrenches[b], comOffset_[b]);
-  }
+  // The inward pass adds the wrenches to the bias terms as it visits the bodies.
+  std::fill(bias_.begin(), bias_.end(), Vector3{});
   if (jointTorques.empty())
     std::fill(jointTorque_.begin(), jointTorque_.end(), real(0));
   else
     std::copy(jointTorques.begin(), jointTorques.end(), jointTorque_.begin());
-  biasAndOutwardPasses(out);
+  biasAndOutwardPasses(externalWrenches, out);
 }
 
 void ArticulatedBody::checkTestForce(const TestForce& force) const {
@@ -271,48 +221,13 @@ void ArticulatedBody::respond(std::span<const TestForce> forces, std::span<const
                           sizeProblem(forces.size(), magnitudes.size()));
   for (const TestForce& force : forces) checkTestForce(force);
   // The articulated inertias do not depend on the forces (Kokkevis 2004): only the bias terms
-  // are recomputed, from the test forces alone.
-  updateIfStale();
+  // are recomputed, from the test forces alone (and the inertias once, if stale).
   out.resize(linkCount());
   std::fill(bias_.begin(), bias_.end(), Vector3{});
   std::fill(jointTorque_.begin(), jointTorque_.end(), real(0));
   for (std::size_t k = 0; k < forces.size(); ++k)
     depositTestForce(forces[k], magnitudes.empty() ? real(1) : magnitudes[k]);
-  biasAndOutwardPasses(out);
-}
-
-void ArticulatedBody::biasAndOutwardPasses(Output& out) {
-  // Inward pass, leaves to root (Table 7.1, second loop): u_i = tau_i - S_i^T p^A_i, and the
-  // parent receives p^a_i = X_i^T (p^A_i + U_i u_i / (d_i + c_i)).
-  for (std::size_t i = links_.size(); i-- > 0;) {
-    const Vector3& pa = bias_[i + 1];
-    const real ui = jointTorque_[i] - pa.x;
-    jointBias_[i] = ui;
-    const Vector3 passed = pa + jointForceDirection_[i] * (ui * inverseJointInertia_[i]);
-    bias_[parentSlot_[i]] += translateForceBack(passed, shift_[i]);
-  }
-
-  // The free-floating base: nothing acts on it from outside the tree, so 0 = D^A_0 v_0 + p^A_0
-  // (Featherstone 2008, chapter 9, free-floating bases, with v for a). D^A_0 is symmetric
-  // positive definite: the base's own inertia is, and every child adds a positive
-  // semi-definite term.
-  Vector3 v0{};
-  if (!baseFixed_) v0 = articulatedInertia_[0].solve(-bias_[0]);
-  originVelocity_[0] = v0;
-  out.velocities[0] = v0;  // the base frame's origin is its centre of mass
-
-  // Outward pass, root to leaves (Table 7.1, third loop): v'_i = X_i v_parent,
-  // qdot_i = (u_i - U_i^T v'_i) / (d_i + c_i), v_i = v'_i + S_i qdot_i.
-  for (std::size_t i = 0; i < links_.size(); ++i) {
-    const std::size_t self = i + 1;
-    Vector3 v = translateMotion(originVelocity_[parentSlot_[i]], shift_[i]);
-    const real qdot = (jointBias_[i] - jointForceDirection_[i].dot(v)) * inverseJointInertia_[i];
-    v.x += qdot;
-    originVelocity_[self] = v;
-    out.jointRates[i] = qdot;
-    // The centre of mass moves with the body point there: v_O + omega x c.
-    out.velocities[self] = translateMotion(v, comOffset_[self]);
-  }
+  biasAndOutwardPasses({}, out);
 }
 
 // --- reading velocities ----------------------------------------------------------------------

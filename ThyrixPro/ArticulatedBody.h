@@ -133,7 +133,7 @@ class ArticulatedBody {
   // --- description ---------------------------------------------------------------------------
 
   /// The number of links N (joints).
-  [[nodiscard]] int linkCount() const { return static_cast<int>(links_.size()); }
+  [[nodiscard]] int linkCount() const { return static_cast<int>(q_.size()); }
   /// The links, in index order.
   [[nodiscard]] std::span<const ArticulatedLink> links() const { return links_; }
   /// Link @p i.
@@ -200,6 +200,8 @@ class ArticulatedBody {
   [[nodiscard]] Vector2 origin(int b) const { return origin_[b + 1]; }
   /// The world angle of body @p b's frame (rad).
   [[nodiscard]] real angle(int b) const { return angle_[b + 1]; }
+  /// The unit vector of body @p b's frame x axis in world axes: `(cos, sin)` of angle(b).
+  [[nodiscard]] Vector2 axis(int b) const { return axis_[b + 1]; }
   /// The world position of body @p b's centre of mass (m).
   [[nodiscard]] Vector2 centerOfMass(int b) const { return origin_[b + 1] + comOffset_[b + 1]; }
   /// The world position of the point @p local of body @p b's frame (m).
@@ -215,7 +217,8 @@ class ArticulatedBody {
   /// The inward pass quantities that depend only on the configuration (Featherstone 2008,
   /// section 7.3): each body's articulated inertia `D^A_i` about its frame origin in world
   /// axes, `U_i = D^A_i S_i` and `d_i = S_i^T U_i` (plus the joint damping `c_i`). Cached:
-  /// solve() and respond() call it only when the state or a damping has changed since.
+  /// solve() and respond() recompute them, in the same sweep as their own inward pass, only
+  /// when the state or a damping has changed since.
   void computeArticulatedInertias();
 
   /// The velocities from joint torques and external wrenches, in O(N).
@@ -258,12 +261,23 @@ class ArticulatedBody {
   }
 
  private:
-  void updateIfStale();
   void checkTestForce(const TestForce& force) const;
   void depositTestForce(const TestForce& force, real magnitude);
-  /// The bias pass (leaves to root) from bias_ and jointTorque_, then the outward pass (root to
-  /// leaves), writing out. bias_ holds `-f_ext` about each frame origin on entry.
-  void biasAndOutwardPasses(Output& out);
+  /// Link @p i's step of the inward inertia pass, given its articulated inertia @p da: sets
+  /// terms_[i] and returns the inertia it passes to its parent (about the parent's origin).
+  SymmetricMatrix3 articulateJoint(std::size_t i, const SymmetricMatrix3& da);
+  /// Link @p i's step of the inward bias pass, given its bias @p pa: sets u_i and returns the
+  /// bias it passes to its parent (about the parent's origin).
+  Vector3 passBias(std::size_t i, const Vector3& pa);
+  /// The inward sweep, leaves to root: the bias pass from @p externalWrenches (as solve()
+  /// takes them, or empty), the forces already in bias_ and jointTorque_, and the articulated
+  /// inertias too when @p withInertias.
+  template <bool withInertias>
+  void inwardPass(std::span<const Vector3> externalWrenches);
+  /// The bias pass (leaves to root) from @p externalWrenches (or none), the forces in bias_ and
+  /// jointTorque_, with the articulated inertias if they are stale, then the outward pass (root
+  /// to leaves), writing @p out.
+  void biasAndOutwardPasses(std::span<const Vector3> externalWrenches, Output& out);
 
   real baseMass_;
   real baseInertia_;
@@ -288,11 +302,18 @@ class ArticulatedBody {
   // Per link (joint) i.
   std::vector<std::size_t> parentSlot_;  ///< the parent's slot in the per-body arrays
   std::vector<Vector2> shift_;  ///< origin minus the parent's origin: X_i is a pure translation
-  std::vector<Vector3> jointForceDirection_;  ///< U_i = D^A_i S_i
-  std::vector<real> inverseJointInertia_;     ///< 1 / (d_i + c_i), d_i = S_i^T D^A_i S_i
-  std::vector<real> jointDamping_;            ///< c_i, the implicit joint damping
-  std::vector<real> jointTorque_;             ///< tau_i for the current pass
-  std::vector<real> jointBias_;               ///< u_i = tau_i - S_i^T p^A_i
+  /// Per joint, the coefficients the inertia pass leaves for the bias and outward passes:
+  /// Table 7.1's U_i and d_i folded with X_i (see ArticulatedBody.cpp for the algebra).
+  struct JointTerms {
+    real inverseD = 0;  ///< 1 / (d_i + c_i), d_i = S_i^T D^A_i S_i
+    real alpha = 0;     ///< (c_i - g_i) / (d_i + c_i), g_i = r_i x (linear part of U_i)
+    real gamma = 0;     ///< (d_i + g_i) / (d_i + c_i)
+    Vector2 beta;       ///< the linear part of U_i = D^A_i S_i, over d_i + c_i
+  };
+  std::vector<JointTerms> terms_;   ///< per joint, from the inertia pass
+  std::vector<real> jointDamping_;  ///< c_i, the implicit joint damping
+  std::vector<real> jointTorque_;   ///< tau_i for the current pass
+  std::vector<real> jointBias_;     ///< u_i = tau_i - S_i^T p^A_i
 };
 
 }  // namespace thyrix

@@ -521,6 +521,19 @@ TEST_P(ArticulatedAgentTest, StiffServoConvergesWithoutOscillation) {
   for (int i = 0; i < 6; ++i) EXPECT_NEAR(arm.servoTorque(i), real(-0.5), real(1e-3));
   arm.clearServo(2);
   EXPECT_FALSE(arm.hasServo(2));
+  // A cleared servo leaves its joint free from the next step: no damping, no servo torque; the
+  // others keep theirs. Clearing them all frees every joint.
+  chain.advanceTime();
+  EXPECT_EQ(arm.articulatedBody().jointDamping(2), 0);
+  EXPECT_EQ(arm.servoTorque(2), 0);
+  EXPECT_EQ(arm.articulatedBody().jointDamping(3), real(1e9) * chain.timestep());
+  EXPECT_NE(arm.servoTorque(3), 0);
+  for (int i = 0; i < 6; ++i) arm.clearServo(i);
+  chain.advanceTime();
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_EQ(arm.articulatedBody().jointDamping(i), 0);
+    EXPECT_EQ(arm.servoTorque(i), 0);
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -680,6 +693,27 @@ TEST(ArticulatedAgentRules, NeighboursNeverCollideOthersDo) {
   EXPECT_TRUE(collide(3, 4));
   EXPECT_EQ(Agent::bodyOf(agent.linkShape(3)), 3);
   EXPECT_EQ(Agent::bodyOf(agent.basePart(1)), -1);
+}
+
+TEST(ArticulatedAgentRules, LinkCapsulesCarryTheDirectionOfTheirAngle) {
+  // The agent places each link's capsule with the kinematics' (cos, sin) of its angle, which
+  // the simulator reuses for the capsule's end points (Primitive::direction()): it must be
+  // exactly what cos and sin of the angle give, and follow an angle set by hand.
+  Simulator simulator(real(0.01));
+  Agent& agent = simulator.registerObject(makeArm(3, real(0.4)));
+  agent.setJointTorque(1, real(0.5));
+  for (int step = 0; step < 5; ++step) simulator.advanceTime();
+  for (int i = 0; i < agent.linkCount(); ++i) {
+    CappedRectangle& shape = agent.linkShape(i);
+    ASSERT_NE(shape.alpha, 0);
+    const Vector2 direction = shape.direction();
+    EXPECT_EQ(direction.x, std::cos(shape.alpha));
+    EXPECT_EQ(direction.y, std::sin(shape.alpha));
+  }
+  CappedRectangle& shape = agent.linkShape(2);
+  shape.alpha = real(2.5);
+  EXPECT_EQ(shape.direction().x, std::cos(real(2.5)));
+  EXPECT_EQ(shape.direction().y, std::sin(real(2.5)));
 }
 
 TEST(ArticulatedAgentRules, DrawsPartsLinksAndJoints) {

@@ -1,0 +1,174 @@
+/// @file ArticulatedBodyPasses.cpp
+/// @brief The passes of ArticulatedBody's quasistatic articulated-body algorithm: the inward
+/// sweep (articulated inertias and bias forces, leaves to root) and the outward pass (joint
+/// rates and velocities, root to leaves). The state, kinematics, solve() and respond() are in
+/// ArticulatedBody.cpp, with the conventions (frames, world-aligned axes, spatial vectors).
+#include <ThyrixPro/ArticulatedBody.h>
+#include <ThyrixPro/SpatialAlgebra.h>
+
+#include <algorithm>
+
+namespace thyrix {
+
+// --- articulated inertias ---------------------------------------------------------------------
+//
+// Link i's joint equations, folded with X_i. Let D_i = d_i + c_i (the joint inertia plus its
+// damping), U_i = (d_i, b_i) with b_i the linear part, r_i = shift_[i] the joint seen from the
+// parent's origin and g_i = r_i x b_i. Writing out X_i^T (...) X_i and X_i^T (...) for the pure
+// translation X_i (SpatialAlgebra.h) gives, with A the lower-right 2 x 2 block of D^A_i and
+// h_i = (-r_y, r_x):
+//
+//   inertia passed to the parent:  [ h^T A h + c - k^2 / D      (A h + b k / D)^T ]
+//                                  [ A h + b k / D              A - b b^T / D     ],  k = c - g
+//   bias passed to the parent:     ( alpha p.n + r x p.f + gamma tau,  p.f + beta u )
+//   joint rate:                    qdot = u / D - gamma omega' - beta . v'
+//
+// with u = tau - p.n, alpha = k / D, gamma = (d + g) / D and beta = b / D, (n, f) the parts of
+// p^A_i and (omega', v') the parent's velocity at its own origin. The same algebra as
+// Table 7.1, but the coefficients alpha, beta, gamma depend on the configuration only: the
+// inertia pass computes them once, and each bias and outward pass, which are chains of
+// dependent operations from link to link, does only a few multiply-adds per link.
+
+inline SymmetricMatrix3 ArticulatedBody::articulateJoint(std::size_t i,
+                                                         const SymmetricMatrix3& da) {
+  // Featherstone 2008, section 7.3 and Table 7.1: U_i = I^A_i S_i, d_i = S_i^T U_i, and the
+  // parent receives I^a_i = X_i^T (I^A_i - U_i U_i^T / d_i) X_i. A damped joint (torque
+  // -c_i qdot_i) has S_i^T f_i = tau_i - c_i qdot_i, so its rate solves
+  // (d_i + c_i) qdot_i = u_i - U_i^T v'_i and d_i + c_i replaces d_i in both places; the first
+  // row of the bracket is then U_i^T c_i / (d_i + c_i), zero for an undamped joint. S = (1, 0,
+  // 0) picks the first column of D^A_i. Written out as in the table above.
+  const real c = jointDamping_[i];
+  const Vector2 r = shift_[i];
+  const Vector2 h{-r.y, r.x};
+  const Vector2 b{da.xy, da.xz};
+  const real inverseD = 1 / (da.xx + c);
+  const real g = cross(r, b);
+  const real k = c - g;
+  const Vector2 beta = b * inverseD;
+  terms_[i] = {inverseD, k * inverseD, (da.xx + g) * inverseD, beta};
+  const Vector2 ah{da.yy * h.x + da.yz * h.y, da.yz * h.x + da.zz * h.y};  // A h
+  SymmetricMatrix3 passed;
+  passed.xx = h.dot(ah) + c - k * k * inverseD;
+  passed.xy = ah.x + beta.x * k;
+  passed.xz = ah.y + beta.y * k;
+  passed.yy = da.yy - beta.x * b.x;
+  passed.yz = da.yz - beta.x * b.y;
+  passed.zz = da.zz - beta.y * b.y;
+  return passed;
+}
+
+inline Vector3 ArticulatedBody::passBias(std::size_t i, const Vector3& pa) {
+  // Table 7.1, second loop: u_i = tau_i - S_i^T p^A_i, and the parent receives
+  // p^a_i = X_i^T (p^A_i + U_i u_i / (d_i + c_i)), written out as in the table above.
+  const JointTerms& t = terms_[i];
+  const real ui = jointTorque_[i] - pa.x;
+  jointBias_[i] = ui;
+  const Vector2 f = linearPart(pa);
+  return forceVector(t.alpha * pa.x + cross(shift_[i], f) + t.gamma * jointTorque_[i],
+                     f + t.beta * ui);
+}
+
+template <bool withInertias>
+void ArticulatedBody::inwardPass(std::span<const Vector3> externalWrenches) {
+  // Leaves to root: reverse index order visits children before parents. A link's terms go to
+  // its parent's slot, except when the parent is the next link visited (slot i: within a
+  // limb, the usual case): they are then carried to it in registers. Each link waits for its
+  // children, and a round trip through memory would lengthen every link's step. So a body's
+  // slot holds only what its other children have passed (and, in bias_, respond()'s test
+  // forces); its own terms are added when it is visited: its inertia about its frame origin
+  // (ALGORITHMS.md section 2), and p^A_i starts as -f_ext,i about the frame origin (Table 7.1
+  // without the v x* I v term), the wrench being given about the centre of mass.
+  const auto ownBias = [&](std::size_t slot) {
+    return externalWrenches.empty() ? Vector3{}
+                                    : -translateForceBack(externalWrenches[slot], comOffset_[slot]);
+  };
+  if constexpr (withInertias)
+    std::fill(articulatedInertia_.begin(), articulatedInertia_.end(), SymmetricMatrix3{});
+  SymmetricMatrix3 inertiaCarried;
+  Vector3 biasCarried;
+  for (std::size_t i = links_.size(); i-- > 0;) {
+    const std::size_t self = i + 1;
+    const std::size_t parent = parentSlot_[i];
+    const bool carry = parent == i;
+    if constexpr (withInertias) {
+      const ArticulatedLink& link = links_[i];
+      const SymmetricMatrix3 da = spatialInertia(link.mass, link.inertia, comOffset_[self]) +
+                                  articulatedInertia_[self] + inertiaCarried;
+      articulatedInertia_[self] = da;
+      const SymmetricMatrix3 passed = articulateJoint(i, da);
+      if (carry) {
+        inertiaCarried = passed;
+      } else {
+        articulatedInertia_[parent] = articulatedInertia_[parent] + passed;
+        inertiaCarried = {};
+      }
+    }
+    const Vector3 passed = passBias(i, ownBias(self) + bias_[self] + biasCarried);
+    if (carry) {
+      biasCarried = passed;
+    } else {
+      bias_[parent] += passed;
+      biasCarried = {};
+    }
+  }
+  // The first link is always carried (slot 0 is the base): the base gets its last terms here.
+  if constexpr (withInertias)
+    articulatedInertia_[0] = SymmetricMatrix3::diagonal(baseInertia_, baseMass_, baseMass_) +
+                             articulatedInertia_[0] + inertiaCarried;
+  bias_[0] = ownBias(0) + bias_[0] + biasCarried;
+}
+
+void ArticulatedBody::computeArticulatedInertias() {
+  // The bias pass comes along (its result is not used): one sweep, and no second copy of it.
+  std::fill(bias_.begin(), bias_.end(), Vector3{});
+  std::fill(jointTorque_.begin(), jointTorque_.end(), real(0));
+  inwardPass<true>({});
+  inertiasStale_ = false;
+}
+
+// --- the passes of solve() and respond() ------------------------------------------------------
+
+void ArticulatedBody::biasAndOutwardPasses(std::span<const Vector3> externalWrenches, Output& out) {
+  // Leaves to root. The articulated inertias and the bias forces are both built from the
+  // leaves, and link i's bias needs only its own terms: when the configuration has changed,
+  // one sweep does both, so the two dependency chains run side by side.
+  if (inertiasStale_) {
+    inwardPass<true>(externalWrenches);
+    inertiasStale_ = false;
+  } else {
+    inwardPass<false>(externalWrenches);
+  }
+
+  // The free-floating base: nothing acts on it from outside the tree, so 0 = D^A_0 v_0 + p^A_0
+  // (Featherstone 2008, chapter 9, free-floating bases, with v for a). D^A_0 is symmetric
+  // positive definite: the base's own inertia is, and every child adds a positive
+  // semi-definite term.
+  Vector3 v0{};
+  if (!baseFixed_) v0 = articulatedInertia_[0].solve(-bias_[0]);
+  originVelocity_[0] = v0;
+  out.velocities[0] = v0;  // the base frame's origin is its centre of mass
+
+  // Outward pass, root to leaves (Table 7.1, third loop): v'_i = X_i v_parent,
+  // qdot_i = (u_i - U_i^T v'_i) / (d_i + c_i), v_i = v'_i + S_i qdot_i, with qdot_i as in the
+  // table above. The parent's velocity is carried in registers when it is the body just
+  // visited (slot i), as in the inward pass.
+  Vector3 previous = v0;
+  for (std::size_t i = 0; i < links_.size(); ++i) {
+    const std::size_t self = i + 1;
+    const std::size_t parent = parentSlot_[i];
+    Vector3 vp = previous;
+    if (parent != i) vp = originVelocity_[parent];
+    const JointTerms& t = terms_[i];
+    const real qdot =
+        jointBias_[i] * t.inverseD - t.gamma * angularPart(vp) - t.beta.dot(linearPart(vp));
+    Vector3 v = translateMotion(vp, shift_[i]);
+    v.x += qdot;
+    originVelocity_[self] = v;
+    previous = v;
+    out.jointRates[i] = qdot;
+    // The centre of mass moves with the body point there: v_O + omega x c.
+    out.velocities[self] = translateMotion(v, comOffset_[self]);
+  }
+}
+
+}  // namespace thyrix
