@@ -41,18 +41,42 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
   reserveFor(movable_, objects.size() + added.size());
   reserveFor(multiBodies_, objects.size() + added.size());
   reserveFor(objectContactStart_, objects.size() + added.size() + 1);
+  // Rest skipping's memory of the shapes and bodies.
+  std::size_t borders = borderShapes_.size();
+  for (const PhysicalObject* object : added)
+    for (const Primitive* primitive : object->primitives())
+      borders += primitive->shapeType() == ShapeType::HalfPlane ? 1 : 0;
+  const std::size_t gridShapes = gridShapes_.size() + shapes - (borders - borderShapes_.size());
+  const std::size_t words = (gridShapes + 63) / 64;
+  reserveFor(bodyStates_, objects.size() + added.size());
+  reserveFor(shapePoses_, shapes_.size() + shapes);
+  reserveFor(shapeMoved_, shapes_.size() + shapes);
+  reserveFor(gridSlot_, shapes_.size() + shapes);
+  reserveFor(gridMoved_, gridShapes);
+  reserveFor(gridMovedBits_, words);
+  reserveFor(borderReach_, borders * words);
+  reserveFor(previousStart_, shapes_.size() + shapes + 1);
 }
 
 void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) noexcept {
+  BodyState state;
+  state.firstShape = static_cast<std::uint32_t>(shapes_.size());
+  state.shapeCount = static_cast<std::uint32_t>(object.primitives().size());
+  bodyStates_.push_back(state);  // not `known`: its first detection computes everything
   for (Primitive* primitive : object.primitives()) {
     const auto shape = static_cast<std::uint32_t>(shapes_.size());
     shapes_.push_back({primitive, static_cast<std::uint32_t>(index), primitive->shapeType()});
     geometry_.push_back({});
+    shapePoses_.push_back({});
+    shapeMoved_.push_back(1);
     if (primitive->shapeType() == ShapeType::HalfPlane) {
       borderShapes_.push_back(shape);
+      gridSlot_.push_back(~0u);
     } else {
+      gridSlot_.push_back(static_cast<std::uint32_t>(gridShapes_.size()));
       gridShapes_.push_back(shape);
       gridBoxes_.push_back({});
+      gridMoved_.push_back(1);
     }
   }
   bodies_.push_back({});
@@ -64,6 +88,8 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
 
 void Simulator::reserveContacts(std::size_t count) {
   contacts.items_.reserve(count);
+  previousContacts_.reserve(count);  // the two swap at each step
+  previousOrder_.reserve(count);
   objectContacts_.reserve(2 * count);
   pairs_.reserve(count);
   rows_.reserve(count);
@@ -98,7 +124,11 @@ void Simulator::advanceTime() {
 }
 
 void Simulator::eraseContacts() {
+  // Last step's contacts are what rest skipping reuses: kept aside, not destroyed.
+  previousValid_ = contactsComplete_;
+  if (contactsComplete_) std::swap(contacts.items_, previousContacts_);
   contacts.items_.clear();
+  contactsComplete_ = false;
   for (PhysicalObject& object : objects) object.contacts = {};
 }
 

@@ -64,6 +64,12 @@ class Simulator : public World {
   /// the tactile sensors then read the forces.
   void solveContacts();
 
+  /// Rest skipping (exact, on by default): a shape whose pose did not change since the last
+  /// detection keeps its geometry and box, and two such shapes keep the last detection's
+  /// contacts instead of being tested again. The results are bit-identical either way; turn
+  /// it off only to compare.
+  bool restSkipping = true;
+
   /// Sizes the per-step buffers for up to @p count contacts (and, with articulated agents
   /// registered, islands of up to 256 rows), so that steps with no more contacts than that
   /// allocate nothing. Without it the buffers grow to the largest count
@@ -127,8 +133,31 @@ class Simulator : public World {
     real margin;
   };
 
+  /// What detection remembers of a body, to notice that it moved or changed its filters.
+  struct BodyState {
+    Vector2 r;
+    real alpha = 0;
+    std::uint32_t group = 0;       // collisionGroup
+    std::uint32_t firstShape = 0;  // its shapes are firstShape, firstShape + 1, ...
+    std::uint32_t shapeCount = 0;
+    bool fixed = false;
+    bool movable = false;
+    bool known = false;  // false until its first detection
+  };
+  /// The pose of a primitive its geometry was computed from, and its capsule half axis.
+  struct ShapePose {
+    Vector2 r;
+    real alpha = 0;
+    Vector2 axis;
+  };
+
   void updateGeometry();
+  void updateBody(std::uint32_t body, bool everything);
+  void updateShape(std::uint32_t shape, bool poseKnown);
+  void findBorderContacts(bool reuse);
   void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);
+  void reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB);
+  void indexPreviousContacts();
   void solveIsland(std::span<const std::uint32_t> island);
   void solveGeneralIsland(std::span<const std::uint32_t> island);
   [[nodiscard]] bool movable(std::uint32_t body) const {
@@ -151,6 +180,23 @@ class Simulator : public World {
   std::vector<BoundingBox> gridBoxes_;
   std::vector<BoxPair> pairs_;
   BroadPhase broadPhase_;
+  // Rest skipping (SimulatorContacts.cpp): what the last detection saw.
+  std::vector<BodyState> bodyStates_;
+  std::vector<ShapePose> shapePoses_;
+  std::vector<std::uint8_t> shapeMoved_;      // per shape: geometry recomputed this detection
+  std::vector<std::uint8_t> gridMoved_;       // the same per grid shape, for the broad phase
+  std::vector<std::uint32_t> gridSlot_;       // per shape: its index in gridShapes_
+  std::vector<std::uint64_t> gridMovedBits_;  // gridMoved_ as bits
+  std::vector<std::uint64_t> borderReach_;    // per border, a bit per grid shape behind it
+  std::size_t reachShapes_ = 0;               // grid shapes borderReach_ was computed for
+  std::vector<GlobalContactInfo> previousContacts_;  // the last detection's contacts
+  std::vector<std::uint32_t> previousStart_;  // previous contacts by shape A: offsets
+  std::vector<std::uint32_t> previousOrder_;  // previous contacts by shape A: indices
+  real geometryFraction_ = 0;    // speculativeFraction the cached margins were computed with
+  bool contactsComplete_ = false;  // `contacts` holds exactly one detection's contacts
+  bool previousValid_ = false;     // previousContacts_ is the last detection's, complete
+  bool previousIndexed_ = false;   // previousStart_ and previousOrder_ are up to date
+  std::size_t unmovedShapes_ = 0;  // this detection
 
   std::vector<ContactInfo> objectContacts_;        // every object's contacts, object by object
   std::vector<std::uint32_t> objectContactStart_;  // where each object's contacts begin

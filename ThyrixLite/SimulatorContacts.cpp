@@ -5,84 +5,231 @@
 #include <ThyrixLite/Simulator.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <type_traits>
 
 namespace thyrix {
 
+namespace {
+
+/// Bitwise equality: a pose is unchanged only if its bits are (so -0 differs from +0, and a
+/// NaN equals itself), which is what makes reusing results exact.
+bool sameBits(real a, real b) {
+  using Bits = std::conditional_t<sizeof(real) == 8, std::uint64_t, std::uint32_t>;
+  return std::bit_cast<Bits>(a) == std::bit_cast<Bits>(b);
+}
+bool sameBits(Vector2 a, Vector2 b) { return sameBits(a.x, b.x) && sameBits(a.y, b.y); }
+
+/// Bits 0 to count - 1 of word @p word of a bit set of @p count bits.
+std::uint64_t wordMask(std::size_t word, std::size_t count) {
+  const std::size_t rest = count - 64 * word;
+  return rest >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << rest) - 1;
+}
+
+}  // namespace
+
 void Simulator::updateGeometry() {
-  const real fraction = settings_.speculativeFraction;
-  for (PhysicalObject& object : objects) {
-    object.boxMin = {realMax, realMax};
-    object.boxMax = {-realMax, -realMax};
-  }
+  // A new margin changes every shape's geometry; without rest skipping nothing is kept.
+  const bool everything = !restSkipping || !sameBits(settings_.speculativeFraction, geometryFraction_);
+  geometryFraction_ = settings_.speculativeFraction;
   sensingPrimitives_.clear();
-  for (std::size_t s = 0; s < shapes_.size(); ++s) {
+  unmovedShapes_ = 0;
+  for (std::uint32_t body = 0; body < objects.size(); ++body) updateBody(body, everything);
+}
+
+void Simulator::updateBody(std::uint32_t index, bool everything) {
+  PhysicalObject& body = objects[index];
+  BodyState& state = bodyStates_[index];
+  // A body is unchanged if its pose and its collision filters are: its rigid parts are then
+  // where they were (followOwner would put them there again) unless moved by hand, which the
+  // parts' own poses show. Parts placed by their owner (articulated links) show it the same way.
+  const bool changed = everything || !state.known || !sameBits(body.r, state.r) ||
+                       !sameBits(body.alpha, state.alpha) || body.fixed != state.fixed ||
+                       body.collisionGroup != state.group;
+  const bool known = state.known;
+  if (changed) {
+    state.r = body.r;
+    state.alpha = body.alpha;
+    state.fixed = body.fixed;
+    state.group = body.collisionGroup;
+    state.movable = movable(index);
+    state.known = true;
+  }
+  bool anyMoved = changed;
+  const std::uint32_t end = state.firstShape + state.shapeCount;
+  for (std::uint32_t s = state.firstShape; s < end; ++s) {
     Primitive& primitive = *shapes_[s].primitive;
-    primitive.followOwner();
     if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
-    ShapeGeometry& g = geometry_[s];
-    g.radius = primitive.radius();
-    g.margin = fraction * g.radius;
+    const ShapePose& pose = shapePoses_[s];
+    const bool moved =
+        changed || !sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha);
+    shapeMoved_[s] = moved ? 1 : 0;
+    if (gridSlot_[s] != ~0u) gridMoved_[gridSlot_[s]] = shapeMoved_[s];
+    if (!moved) {
+      ++unmovedShapes_;
+      continue;
+    }
+    primitive.followOwner();
+    updateShape(s, known);
+    anyMoved = true;
+  }
+  if (!anyMoved) return;
+  // The body's box: the union of its shapes' boxes (margins excluded).
+  body.boxMin = {realMax, realMax};
+  body.boxMax = {-realMax, -realMax};
+  for (std::uint32_t s = state.firstShape; s < end; ++s) {
+    const ShapeGeometry& g = geometry_[s];
     Vector2 lower;
     Vector2 upper;
     switch (shapes_[s].type) {
       case ShapeType::HalfPlane:
-        g.p0 = primitive.r;
-        g.p1 = static_cast<const Border&>(primitive).normal();
         continue;  // unbounded: no box
       case ShapeType::Circle:
-        g.p0 = primitive.r;
         lower = g.p0 - Vector2{g.radius, g.radius};
         upper = g.p0 + Vector2{g.radius, g.radius};
         break;
-      case ShapeType::Capsule: {
-        const Vector2 axis = Vector2{primitive.halfLength(), 0}.rotated(primitive.alpha);
-        g.p0 = primitive.r - axis;
-        g.p1 = primitive.r + axis;
+      case ShapeType::Capsule:
         lower = Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} -
                 Vector2{g.radius, g.radius};
         upper = Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} +
                 Vector2{g.radius, g.radius};
         break;
-      }
     }
-    PhysicalObject& body = objects[shapes_[s].body];
     body.boxMin = {std::min(body.boxMin.x, lower.x), std::min(body.boxMin.y, lower.y)};
     body.boxMax = {std::max(body.boxMax.x, upper.x), std::max(body.boxMax.y, upper.y)};
   }
-  for (std::size_t i = 0; i < gridShapes_.size(); ++i) {
-    const std::uint32_t s = gridShapes_[i];
-    // The shape's own box (not the body's), widened by its speculative margin.
-    const ShapeGeometry& g = geometry_[s];
-    const Vector2 reach{g.radius + g.margin, g.radius + g.margin};
-    if (shapes_[s].type == ShapeType::Circle) {
-      gridBoxes_[i] = {g.p0 - reach, g.p0 + reach};
-    } else {
-      gridBoxes_[i] = {Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} - reach,
-                       Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} + reach};
-    }
+}
+
+void Simulator::updateShape(std::uint32_t s, bool poseKnown) {
+  const Primitive& primitive = *shapes_[s].primitive;
+  ShapePose& pose = shapePoses_[s];
+  ShapeGeometry& g = geometry_[s];
+  g.radius = primitive.radius();
+  g.margin = settings_.speculativeFraction * g.radius;
+  switch (shapes_[s].type) {
+    case ShapeType::HalfPlane:
+      g.p0 = primitive.r;
+      g.p1 = static_cast<const Border&>(primitive).normal();
+      break;
+    case ShapeType::Circle:
+      g.p0 = primitive.r;  // a circle's geometry does not depend on its angle
+      break;
+    case ShapeType::Capsule:
+      // The half axis turns with the angle only: a capsule that slides keeps it.
+      if (!poseKnown || !sameBits(primitive.alpha, pose.alpha))
+        pose.axis = Vector2{primitive.halfLength(), 0}.rotated(primitive.alpha);
+      g.p0 = primitive.r - pose.axis;
+      g.p1 = primitive.r + pose.axis;
+      break;
+  }
+  pose.r = primitive.r;
+  pose.alpha = primitive.alpha;
+  if (gridSlot_[s] == ~0u) return;
+  // The shape's own box (not the body's), widened by its speculative margin.
+  const Vector2 reach{g.radius + g.margin, g.radius + g.margin};
+  if (shapes_[s].type == ShapeType::Circle) {
+    gridBoxes_[gridSlot_[s]] = {g.p0 - reach, g.p0 + reach};
+  } else {
+    gridBoxes_[gridSlot_[s]] = {
+        Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} - reach,
+        Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} + reach};
   }
 }
 
 void Simulator::detectContacts() {
+  // Appending to contacts of another detection: this list is no basis for the next reuse.
+  const bool fromEmpty = contacts.empty();
   updateGeometry();
-  broadPhase_.findPairs(gridBoxes_, pairs_);
-  for (const BoxPair& pair : pairs_) addContacts(gridShapes_[pair.first], gridShapes_[pair.second]);
-  for (const std::uint32_t border : borderShapes_) {
-    const Vector2 point = geometry_[border].p0;
-    const Vector2 normal = geometry_[border].p1;
-    for (std::size_t i = 0; i < gridShapes_.size(); ++i) {
-      // The box (margin included) lies entirely on the free side: no contact is possible.
-      const BoundingBox& box = gridBoxes_[i];
-      const Vector2 centre = (box.lower + box.upper) * real(0.5);
-      const Vector2 half = (box.upper - box.lower) * real(0.5);
-      const real reach = std::abs(normal.x) * half.x + std::abs(normal.y) * half.y;
-      if (dot(centre - point, normal) - reach > 0) continue;
-      addContacts(border, gridShapes_[i]);
-    }
+  // Reuse needs the last detection's complete list (eraseContacts kept it aside).
+  const bool reuse = restSkipping && previousValid_ && fromEmpty && unmovedShapes_ > 0;
+  previousIndexed_ = false;
+  broadPhase_.findPairs(gridBoxes_, gridMoved_, pairs_);
+  for (const BoxPair& pair : pairs_) {
+    const std::uint32_t a = gridShapes_[pair.first];
+    const std::uint32_t b = gridShapes_[pair.second];
+    if (reuse && (shapeMoved_[a] | shapeMoved_[b]) == 0)
+      reuseContacts(a, b);
+    else
+      addContacts(a, b);
   }
+  findBorderContacts(reuse);
+  contactsComplete_ = fromEmpty;
+  previousValid_ = false;  // used: the next detection compares against this one
   statistics_.contacts = contacts.size();
   for (PhysicalObject& object : objects) object.updateSensors(*this);
+}
+
+void Simulator::findBorderContacts(bool reuse) {
+  // Borders skip the broad phase: each meets every grid shape whose box reaches behind its
+  // line. Which shapes do is kept as one bit per grid shape and border, retested only for
+  // moved shapes; the pairs are visited in the same order either way (border, then shape).
+  const std::size_t count = gridShapes_.size();
+  const std::size_t words = (count + 63) / 64;
+  const bool remembered = restSkipping && reachShapes_ == count;
+  reachShapes_ = count;
+  borderReach_.resize(borderShapes_.size() * words);
+  gridMovedBits_.assign(words, 0);
+  for (std::size_t i = 0; i < count; ++i)
+    gridMovedBits_[i / 64] |= std::uint64_t{gridMoved_[i]} << (i % 64);
+  for (std::size_t k = 0; k < borderShapes_.size(); ++k) {
+    const std::uint32_t border = borderShapes_[k];
+    const bool borderMoved = !remembered || shapeMoved_[border] != 0;
+    const Vector2 point = geometry_[border].p0;
+    const Vector2 normal = geometry_[border].p1;
+    for (std::size_t w = 0; w < words; ++w) {
+      const std::uint64_t retest = borderMoved ? wordMask(w, count) : gridMovedBits_[w];
+      std::uint64_t& reach = borderReach_[k * words + w];
+      reach &= ~retest;
+      for (std::uint64_t bits = retest; bits != 0; bits &= bits - 1) {
+        const std::size_t i = 64 * w + static_cast<std::size_t>(std::countr_zero(bits));
+        // Out of reach when the box (margin included) lies entirely on the free side.
+        const BoundingBox& box = gridBoxes_[i];
+        const Vector2 centre = (box.lower + box.upper) * real(0.5);
+        const Vector2 half = (box.upper - box.lower) * real(0.5);
+        const real extent = std::abs(normal.x) * half.x + std::abs(normal.y) * half.y;
+        if (dot(centre - point, normal) - extent <= 0) reach |= bits & (~bits + 1);
+      }
+      for (std::uint64_t bits = reach; bits != 0; bits &= bits - 1) {
+        const std::uint32_t shape = gridShapes_[64 * w + static_cast<std::size_t>(std::countr_zero(bits))];
+        if (reuse && !borderMoved && shapeMoved_[shape] == 0)
+          reuseContacts(border, shape);
+        else
+          addContacts(border, shape);
+      }
+    }
+  }
+}
+
+void Simulator::reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
+  // Neither shape moved and its filters did not change: the contacts are last detection's.
+  // (Pairs within one multi-body object are always tested: whether they collide is its call.)
+  if (shapes_[shapeB].type < shapes_[shapeA].type) std::swap(shapeA, shapeB);
+  if (shapes_[shapeA].body == shapes_[shapeB].body) {
+    addContacts(shapeA, shapeB);
+    return;
+  }
+  if (!previousIndexed_) indexPreviousContacts();
+  for (std::uint32_t k = previousStart_[shapeA]; k < previousStart_[shapeA + 1]; ++k) {
+    const GlobalContactInfo& previous = previousContacts_[previousOrder_[k]];
+    if (previous.shapeB != shapeB) continue;
+    contacts.items_.push_back(previous);
+    contacts.items_.back().force = 0;  // the solver's output, not detection's
+  }
+}
+
+void Simulator::indexPreviousContacts() {
+  // Counting sort of the last detection's contacts by shape A (a pair's points stay in order).
+  previousStart_.assign(shapes_.size() + 1, 0);
+  for (const GlobalContactInfo& c : previousContacts_) ++previousStart_[c.shapeA + 1];
+  for (std::size_t s = 0; s < shapes_.size(); ++s) previousStart_[s + 1] += previousStart_[s];
+  previousOrder_.resize(previousContacts_.size());
+  for (std::uint32_t k = 0; k < previousContacts_.size(); ++k)
+    previousOrder_[previousStart_[previousContacts_[k].shapeA]++] = k;
+  // The fill advanced each start to the next shape's start: shift back.
+  for (std::size_t s = shapes_.size(); s > 0; --s) previousStart_[s] = previousStart_[s - 1];
+  previousStart_[0] = 0;
+  previousIndexed_ = true;
 }
 
 void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
@@ -93,46 +240,37 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
     const MultiBodyObject* multi = multiBodies_[a.body];
     if (multi == nullptr || !multi->selfCollides(*a.primitive, *b.primitive)) return;
   }
-  PhysicalObject& bodyA = objects[a.body];
-  PhysicalObject& bodyB = objects[b.body];
-  if (!movable(a.body) && !movable(b.body)) return;
-  if (bodyA.collisionGroup != 0 && bodyA.collisionGroup == bodyB.collisionGroup) return;
+  // The filters as updateGeometry read them (compact, not from the objects themselves).
+  const BodyState& stateA = bodyStates_[a.body];
+  const BodyState& stateB = bodyStates_[b.body];
+  if (!stateA.movable && !stateB.movable) return;
+  if (stateA.group != 0 && stateA.group == stateB.group) return;
   const ShapeGeometry& ga = geometry_[shapeA];
   const ShapeGeometry& gb = geometry_[shapeB];
   const real margin = a.type == ShapeType::HalfPlane ? gb.margin : std::min(ga.margin, gb.margin);
 
-  Manifold manifold;
+  const auto append = [&](const Manifold& manifold) {
+    for (int i = 0; i < manifold.count; ++i) {
+      const ManifoldPoint& p = manifold.points[i];
+      contacts.items_.push_back({&objects[a.body], &objects[b.body], a.primitive, b.primitive,
+                                 a.body, b.body, shapeA, shapeB, p.feature, p.point,
+                                 manifold.normal, p.depth, 0});
+    }
+  };
   switch (a.type) {
     case ShapeType::HalfPlane:
-      manifold = b.type == ShapeType::Circle
-                     ? collideHalfPlaneCircle(ga.p0, ga.p1, gb.p0, gb.radius, margin)
-                     : collideHalfPlaneCapsule(ga.p0, ga.p1, gb.p0, gb.p1, gb.radius, margin);
+      append(b.type == ShapeType::Circle
+                 ? collideHalfPlaneCircle(ga.p0, ga.p1, gb.p0, gb.radius, margin)
+                 : collideHalfPlaneCapsule(ga.p0, ga.p1, gb.p0, gb.p1, gb.radius, margin));
       break;
     case ShapeType::Circle:
-      manifold = b.type == ShapeType::Circle
-                     ? collideCircles(ga.p0, ga.radius, gb.p0, gb.radius, margin)
-                     : collideCircleCapsule(ga.p0, ga.radius, gb.p0, gb.p1, gb.radius, margin);
+      append(b.type == ShapeType::Circle
+                 ? collideCircles(ga.p0, ga.radius, gb.p0, gb.radius, margin)
+                 : collideCircleCapsule(ga.p0, ga.radius, gb.p0, gb.p1, gb.radius, margin));
       break;
     case ShapeType::Capsule:
-      manifold = collideCapsules(ga.p0, ga.p1, ga.radius, gb.p0, gb.p1, gb.radius, margin);
+      append(collideCapsules(ga.p0, ga.p1, ga.radius, gb.p0, gb.p1, gb.radius, margin));
       break;
-  }
-  for (int i = 0; i < manifold.count; ++i) {
-    const ManifoldPoint& p = manifold.points[i];
-    GlobalContactInfo contact;
-    contact.objectA = &bodyA;
-    contact.objectB = &bodyB;
-    contact.primitiveA = a.primitive;
-    contact.primitiveB = b.primitive;
-    contact.bodyA = a.body;
-    contact.bodyB = b.body;
-    contact.shapeA = shapeA;
-    contact.shapeB = shapeB;
-    contact.feature = p.feature;
-    contact.point = p.point;
-    contact.normal = manifold.normal;
-    contact.depth = p.depth;
-    contacts.items_.push_back(contact);
   }
 }
 
