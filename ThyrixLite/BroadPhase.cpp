@@ -38,47 +38,74 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPa
   findPairs(boxes, {}, pairs);
 }
 
-void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const std::uint8_t> moved,
-                           std::vector<BoxPair>& pairs) {
+void BroadPhase::findPairs(std::span<const BoundingBox> boxes,
+                           std::span<const std::uint64_t> moved, std::vector<BoxPair>& pairs) {
   pairs.clear();
   const auto count = static_cast<std::uint32_t>(boxes.size());
   // Few boxes: testing every pair is cheaper than building the grid (measured: a 22-body
   // arena spent a quarter of its step in the grid).
   if (count <= smallCount) {
-    findPairsAmongFew(boxes, moved, pairs);
+    const bool remembered = !moved.empty() && rememberedCount_ == count && count > 0;
+    findPairsAmongFew(boxes, remembered ? moved[0] : 0, remembered, pairs);
     return;
   }
   rememberedCount_ = 0;
   findPairsInGrid(boxes, pairs);
 }
 
-void BroadPhase::findPairsAmongFew(std::span<const BoundingBox> boxes,
-                                   std::span<const std::uint8_t> moved,
-                                   std::vector<BoxPair>& pairs) {
+namespace {
+
+/// Bit j set when box j overlaps @p box (branch-free: every box is tested).
+std::uint64_t overlapRow(const BoundingBox& box, std::span<const BoundingBox> boxes) {
+  std::uint64_t row = 0;
+  for (std::uint32_t j = 0; j < boxes.size(); ++j) {
+    const BoundingBox& o = boxes[j];
+    const bool overlap = (box.lower.x <= o.upper.x) & (o.lower.x <= box.upper.x) &
+                         (box.lower.y <= o.upper.y) & (o.lower.y <= box.upper.y);
+    row |= std::uint64_t{overlap} << j;
+  }
+  return row;
+}
+
+/// Bits above @p i.
+std::uint64_t above(std::uint32_t i) { return ~std::uint64_t{0} << i << 1; }
+
+}  // namespace
+
+void BroadPhase::findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint64_t moved,
+                                   bool remembered, std::vector<BoxPair>& pairs) {
   const auto count = static_cast<std::uint32_t>(boxes.size());
-  const bool remembered = moved.size() == count && rememberedCount_ == count && count > 0;
-  std::uint64_t movedMask = 0;
-  if (remembered)
-    for (std::uint32_t i = 0; i < count; ++i)
-      if (moved[i] != 0) movedMask |= std::uint64_t{1} << i;
-  if (overlaps_.size() < count) overlaps_.resize(smallCount);
-  for (std::uint32_t i = 0; i < count; ++i) {
-    std::uint64_t bits = 0;
-    if (remembered && moved[i] == 0) {
-      // Unmoved against unmoved: as last time. Only the moved boxes above i are tested.
-      bits = overlaps_[i] & ~movedMask;
-      for (std::uint64_t candidates = movedMask & (~std::uint64_t{0} << i << 1); candidates != 0;
-           candidates &= candidates - 1) {
-        const auto j = static_cast<std::uint32_t>(std::countr_zero(candidates));
-        if (boxes[i].overlaps(boxes[j])) bits |= std::uint64_t{1} << j;
-      }
+  if (overlaps_.size() < count) {
+    overlaps_.resize(smallCount);
+    movedRows_.resize(smallCount);
+  }
+  if (!remembered) moved = count == 0 ? 0 : ~std::uint64_t{0} >> (64 - count);
+  // Only rows that had pairs, moved boxes, and boxes below a moved box that now meets them can
+  // change; every other row stays empty.
+  std::uint64_t visit = (remembered ? rowsWithPairs_ : 0) | moved;
+  for (std::uint64_t bits = moved; bits != 0; bits &= bits - 1) {
+    const auto m = static_cast<std::uint32_t>(std::countr_zero(bits));
+    movedRows_[m] = overlapRow(boxes[m], boxes) & ~(std::uint64_t{1} << m);
+    visit |= movedRows_[m] & ~above(m);
+  }
+  rowsWithPairs_ = 0;
+  for (; visit != 0; visit &= visit - 1) {
+    const auto i = static_cast<std::uint32_t>(std::countr_zero(visit));
+    std::uint64_t row;
+    if ((moved >> i) & 1) {
+      row = movedRows_[i] & above(i);
     } else {
-      for (std::uint32_t j = i + 1; j < count; ++j)
-        if (boxes[i].overlaps(boxes[j])) bits |= std::uint64_t{1} << j;
+      // Unmoved against unmoved: as last time; against the moved boxes above: their rows say.
+      row = overlaps_[i] & ~moved;
+      for (std::uint64_t m = moved & above(i); m != 0; m &= m - 1) {
+        const auto j = static_cast<std::uint32_t>(std::countr_zero(m));
+        row |= ((movedRows_[j] >> i) & 1) << j;
+      }
     }
-    overlaps_[i] = bits;
-    for (; bits != 0; bits &= bits - 1)
-      pairs.push_back({i, static_cast<std::uint32_t>(std::countr_zero(bits))});
+    overlaps_[i] = row;
+    rowsWithPairs_ |= std::uint64_t{row != 0} << i;
+    for (; row != 0; row &= row - 1)
+      pairs.push_back({i, static_cast<std::uint32_t>(std::countr_zero(row))});
   }
   rememberedCount_ = count;
 }

@@ -52,18 +52,19 @@ class BroadPhase {
   void findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
 
   /// The same pairs in the same order as findPairs(boxes, pairs), faster when few boxes moved:
-  /// a box whose @p moved flag is 0 is promised to be the same as in the last call (same
-  /// index, same corners), so its overlaps with other such boxes are not tested again. The
-  /// promise is only used when the last call had as many boxes; otherwise every pair is tested.
-  void findPairs(std::span<const BoundingBox> boxes, std::span<const std::uint8_t> moved,
+  /// a box whose bit in @p moved is 0 (bit `i % 64` of word `i / 64` for box i) is promised to
+  /// be the same as in the last call (same index, same corners), so its overlaps with other
+  /// such boxes are not tested again. The promise is only used when the last call had as many
+  /// boxes, and up to smallCount boxes; otherwise every pair is tested.
+  void findPairs(std::span<const BoundingBox> boxes, std::span<const std::uint64_t> moved,
                  std::vector<BoxPair>& pairs);
 
   /// With false the grid always hashes its cells (for tests comparing the two grids).
   bool allowDenseGrid = true;
 
  private:
-  void findPairsAmongFew(std::span<const BoundingBox> boxes, std::span<const std::uint8_t> moved,
-                         std::vector<BoxPair>& pairs);
+  void findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint64_t moved,
+                         bool remembered, std::vector<BoxPair>& pairs);
   void findPairsInGrid(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
   void findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::int64_t lowX,
                             std::int64_t lowY, std::int64_t columns, std::int64_t rows,
@@ -71,8 +72,11 @@ class BroadPhase {
   void findPairsInHashedGrid(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
   void reserveFor(std::uint32_t count);
 
-  // Few boxes: bit j of overlaps_[i] is set when boxes i < j overlap (last call's result).
+  // Few boxes: bit j of overlaps_[i] is set when boxes i < j overlap (last call's result);
+  // bit i of rowsWithPairs_ when overlaps_[i] is not zero.
   std::vector<std::uint64_t> overlaps_;
+  std::vector<std::uint64_t> movedRows_;  // a moved box's overlaps with every other box
+  std::uint64_t rowsWithPairs_ = 0;
   std::uint32_t rememberedCount_ = 0;  // boxes of the call overlaps_ describes (0: none)
 
   // Grid.

@@ -21,6 +21,7 @@ namespace thyrix {
 /// What the last step did, for monitoring and benchmarks.
 struct StepStatistics {
   std::size_t contacts = 0;           ///< contact points detected
+  std::size_t reusedContacts = 0;     ///< of which kept from the last step (rest skipping)
   std::size_t islands = 0;            ///< islands with at least one contact
   std::size_t solvedIslands = 0;      ///< islands whose contacts needed forces
   std::size_t gaussSeidelSweeps = 0;  ///< sweeps summed over the islands Gauss-Seidel solved
@@ -142,7 +143,8 @@ class Simulator : public World {
     std::uint32_t shapeCount = 0;
     bool fixed = false;
     bool movable = false;
-    bool known = false;  // false until its first detection
+    bool known = false;       // false until its first detection
+    bool standalone = false;  // the body is its one primitive
   };
   /// The pose of a primitive its geometry was computed from, and its capsule half axis.
   struct ShapePose {
@@ -152,12 +154,13 @@ class Simulator : public World {
   };
 
   void updateGeometry();
-  void updateBody(std::uint32_t body, bool everything);
+  void updateBodyBox(std::uint32_t body);
   void updateShape(std::uint32_t shape, bool poseKnown);
   void findBorderContacts(bool reuse);
   void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void indexPreviousContacts();
+  void clearContactLists();
   void solveIsland(std::span<const std::uint32_t> island);
   void solveGeneralIsland(std::span<const std::uint32_t> island);
   [[nodiscard]] bool movable(std::uint32_t body) const {
@@ -184,9 +187,8 @@ class Simulator : public World {
   std::vector<BodyState> bodyStates_;
   std::vector<ShapePose> shapePoses_;
   std::vector<std::uint8_t> shapeMoved_;      // per shape: geometry recomputed this detection
-  std::vector<std::uint8_t> gridMoved_;       // the same per grid shape, for the broad phase
   std::vector<std::uint32_t> gridSlot_;       // per shape: its index in gridShapes_
-  std::vector<std::uint64_t> gridMovedBits_;  // gridMoved_ as bits
+  std::vector<std::uint64_t> gridMovedBits_;  // a bit per grid shape: moved this detection
   std::vector<std::uint64_t> borderReach_;    // per border, a bit per grid shape behind it
   std::size_t reachShapes_ = 0;               // grid shapes borderReach_ was computed for
   std::vector<GlobalContactInfo> previousContacts_;  // the last detection's contacts
@@ -197,9 +199,14 @@ class Simulator : public World {
   bool previousValid_ = false;     // previousContacts_ is the last detection's, complete
   bool previousIndexed_ = false;   // previousStart_ and previousOrder_ are up to date
   std::size_t unmovedShapes_ = 0;  // this detection
+  // Per object: 1 when it keeps PhysicalObject's step hooks (called without virtual calls);
+  // the others, in registration order.
+  std::vector<std::uint8_t> defaultHooks_;
+  std::vector<std::uint32_t> customObjects_;
 
   std::vector<ContactInfo> objectContacts_;        // every object's contacts, object by object
   std::vector<std::uint32_t> objectContactStart_;  // where each object's contacts begin
+  std::vector<std::uint32_t> listedObjects_;       // objects whose `contacts` is not empty
 
   std::vector<SolverBody> bodies_;
   std::vector<std::uint8_t> movable_;

@@ -31,54 +31,71 @@ std::uint64_t wordMask(std::size_t word, std::size_t count) {
 
 void Simulator::updateGeometry() {
   // A new margin changes every shape's geometry; without rest skipping nothing is kept.
-  const bool everything = !restSkipping || !sameBits(settings_.speculativeFraction, geometryFraction_);
+  const bool everything =
+      !restSkipping || !sameBits(settings_.speculativeFraction, geometryFraction_);
   geometryFraction_ = settings_.speculativeFraction;
   sensingPrimitives_.clear();
   unmovedShapes_ = 0;
-  for (std::uint32_t body = 0; body < objects.size(); ++body) updateBody(body, everything);
-}
-
-void Simulator::updateBody(std::uint32_t index, bool everything) {
-  PhysicalObject& body = objects[index];
-  BodyState& state = bodyStates_[index];
-  // A body is unchanged if its pose and its collision filters are: its rigid parts are then
-  // where they were (followOwner would put them there again) unless moved by hand, which the
-  // parts' own poses show. Parts placed by their owner (articulated links) show it the same way.
-  const bool changed = everything || !state.known || !sameBits(body.r, state.r) ||
-                       !sameBits(body.alpha, state.alpha) || body.fixed != state.fixed ||
-                       body.collisionGroup != state.group;
-  const bool known = state.known;
-  if (changed) {
-    state.r = body.r;
-    state.alpha = body.alpha;
-    state.fixed = body.fixed;
-    state.group = body.collisionGroup;
-    state.movable = movable(index);
-    state.known = true;
-  }
-  bool anyMoved = changed;
-  const std::uint32_t end = state.firstShape + state.shapeCount;
-  for (std::uint32_t s = state.firstShape; s < end; ++s) {
-    Primitive& primitive = *shapes_[s].primitive;
-    if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
-    const ShapePose& pose = shapePoses_[s];
-    const bool moved =
-        changed || !sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha);
-    shapeMoved_[s] = moved ? 1 : 0;
-    if (gridSlot_[s] != ~0u) gridMoved_[gridSlot_[s]] = shapeMoved_[s];
-    if (!moved) {
-      ++unmovedShapes_;
+  gridMovedBits_.assign((gridShapes_.size() + 63) / 64, 0);
+  for (std::uint32_t index = 0; index < objects.size(); ++index) {
+    PhysicalObject& body = objects[index];
+    BodyState& state = bodyStates_[index];
+    // A body is unchanged if its pose and its collision filters are: its rigid parts are then
+    // where they were (followOwner would put them there again), unless moved by hand, which
+    // the parts' own poses show; so do parts placed by their owner (articulated links).
+    const bool changed = everything || !state.known || !sameBits(body.r, state.r) ||
+                         !sameBits(body.alpha, state.alpha) || body.fixed != state.fixed ||
+                         body.collisionGroup != state.group;
+    const bool known = state.known;
+    if (changed) {
+      state.r = body.r;
+      state.alpha = body.alpha;
+      state.fixed = body.fixed;
+      state.group = body.collisionGroup;
+      state.movable = movable(index);
+      state.known = true;
+    }
+    if (state.standalone) {  // a primitive of its own: its pose is the body's (common case)
+      const std::uint32_t s = state.firstShape;
+      Primitive& primitive = *shapes_[s].primitive;
+      if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
+      shapeMoved_[s] = changed ? 1 : 0;
+      if (!changed) {
+        ++unmovedShapes_;
+        continue;
+      }
+      updateShape(s, known);
+      updateBodyBox(index);
       continue;
     }
-    primitive.followOwner();
-    updateShape(s, known);
-    anyMoved = true;
+    bool anyMoved = changed;
+    const std::uint32_t end = state.firstShape + state.shapeCount;
+    for (std::uint32_t s = state.firstShape; s < end; ++s) {
+      Primitive& primitive = *shapes_[s].primitive;
+      if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
+      const ShapePose& pose = shapePoses_[s];
+      const bool moved =
+          changed || !sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha);
+      shapeMoved_[s] = moved ? 1 : 0;
+      if (!moved) {
+        ++unmovedShapes_;
+        continue;
+      }
+      primitive.followOwner();
+      updateShape(s, known);
+      anyMoved = true;
+    }
+    if (anyMoved) updateBodyBox(index);
   }
-  if (!anyMoved) return;
-  // The body's box: the union of its shapes' boxes (margins excluded).
+}
+
+void Simulator::updateBodyBox(std::uint32_t index) {
+  // The union of the body's shapes' boxes (margins excluded).
+  PhysicalObject& body = objects[index];
+  const BodyState& state = bodyStates_[index];
   body.boxMin = {realMax, realMax};
   body.boxMax = {-realMax, -realMax};
-  for (std::uint32_t s = state.firstShape; s < end; ++s) {
+  for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
     const ShapeGeometry& g = geometry_[s];
     Vector2 lower;
     Vector2 upper;
@@ -125,13 +142,15 @@ void Simulator::updateShape(std::uint32_t s, bool poseKnown) {
   }
   pose.r = primitive.r;
   pose.alpha = primitive.alpha;
-  if (gridSlot_[s] == ~0u) return;
+  const std::uint32_t slot = gridSlot_[s];
+  if (slot == ~0u) return;
+  gridMovedBits_[slot / 64] |= std::uint64_t{1} << (slot % 64);
   // The shape's own box (not the body's), widened by its speculative margin.
   const Vector2 reach{g.radius + g.margin, g.radius + g.margin};
   if (shapes_[s].type == ShapeType::Circle) {
-    gridBoxes_[gridSlot_[s]] = {g.p0 - reach, g.p0 + reach};
+    gridBoxes_[slot] = {g.p0 - reach, g.p0 + reach};
   } else {
-    gridBoxes_[gridSlot_[s]] = {
+    gridBoxes_[slot] = {
         Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} - reach,
         Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} + reach};
   }
@@ -144,7 +163,8 @@ void Simulator::detectContacts() {
   // Reuse needs the last detection's complete list (eraseContacts kept it aside).
   const bool reuse = restSkipping && previousValid_ && fromEmpty && unmovedShapes_ > 0;
   previousIndexed_ = false;
-  broadPhase_.findPairs(gridBoxes_, gridMoved_, pairs_);
+  statistics_.reusedContacts = 0;
+  broadPhase_.findPairs(gridBoxes_, gridMovedBits_, pairs_);
   for (const BoxPair& pair : pairs_) {
     const std::uint32_t a = gridShapes_[pair.first];
     const std::uint32_t b = gridShapes_[pair.second];
@@ -157,7 +177,7 @@ void Simulator::detectContacts() {
   contactsComplete_ = fromEmpty;
   previousValid_ = false;  // used: the next detection compares against this one
   statistics_.contacts = contacts.size();
-  for (PhysicalObject& object : objects) object.updateSensors(*this);
+  for (const std::uint32_t index : customObjects_) objects[index].updateSensors(*this);
 }
 
 void Simulator::findBorderContacts(bool reuse) {
@@ -169,9 +189,6 @@ void Simulator::findBorderContacts(bool reuse) {
   const bool remembered = restSkipping && reachShapes_ == count;
   reachShapes_ = count;
   borderReach_.resize(borderShapes_.size() * words);
-  gridMovedBits_.assign(words, 0);
-  for (std::size_t i = 0; i < count; ++i)
-    gridMovedBits_[i / 64] |= std::uint64_t{gridMoved_[i]} << (i % 64);
   for (std::size_t k = 0; k < borderShapes_.size(); ++k) {
     const std::uint32_t border = borderShapes_[k];
     const bool borderMoved = !remembered || shapeMoved_[border] != 0;
@@ -215,6 +232,7 @@ void Simulator::reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
     if (previous.shapeB != shapeB) continue;
     contacts.items_.push_back(previous);
     contacts.items_.back().force = 0;  // the solver's output, not detection's
+    ++statistics_.reusedContacts;
   }
 }
 
@@ -275,7 +293,9 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
 }
 
 void Simulator::indexContacts() {
-  // Counting sort by object into one array; each object's `contacts` is its slice of it.
+  // Counting sort by object into one array; each object's `contacts` is its slice of it. Only
+  // objects with contacts are touched: the others' lists are empty already.
+  clearContactLists();
   const std::size_t objectCount = objects.size();
   objectContactStart_.assign(objectCount + 1, 0);
   for (const GlobalContactInfo& c : contacts.items_) {
@@ -294,11 +314,18 @@ void Simulator::indexContacts() {
   }
   // The fill advanced each start to the next object's start: walk back to slice.
   std::uint32_t begin = 0;
-  for (std::size_t i = 0; i < objectCount; ++i) {
+  for (std::uint32_t i = 0; i < objectCount; ++i) {
     const std::uint32_t end = objectContactStart_[i];
+    if (end == begin) continue;
     objects[i].contacts = std::span(objectContacts_).subspan(begin, end - begin);
+    listedObjects_.push_back(i);
     begin = end;
   }
+}
+
+void Simulator::clearContactLists() {
+  for (const std::uint32_t i : listedObjects_) objects[i].contacts = {};
+  listedObjects_.clear();
 }
 
 }  // namespace thyrix

@@ -284,7 +284,7 @@ TEST(BroadPhase, FewBoxesRetestOnlyTheMovedOnes) {
   // Up to smallCount boxes, a call told which boxes moved must give what a full test gives.
   MTRandom random(3);
   std::vector<BoundingBox> boxes = randomBoxes(11, 40, 2, 6);
-  std::vector<std::uint8_t> moved(boxes.size(), 0);
+  std::vector<std::uint64_t> moved(1, 0);  // one bit per box
   BroadPhase incremental;
   BroadPhase full;
   std::vector<BoxPair> incrementalPairs;
@@ -293,13 +293,13 @@ TEST(BroadPhase, FewBoxesRetestOnlyTheMovedOnes) {
   full.findPairs(boxes, fullPairs);
   EXPECT_TRUE(samePairs(incrementalPairs, fullPairs));
   for (int step = 0; step < 200; ++step) {
-    std::fill(moved.begin(), moved.end(), std::uint8_t{0});
+    moved[0] = 0;
     const int moving = 1 + static_cast<int>(random.integer(4));
     for (int k = 0; k < moving; ++k) {
       const std::uint32_t i = random.integer(static_cast<std::uint32_t>(boxes.size()));
       const Vector2 shift = vec(random.uniform(-1, 1), random.uniform(-1, 1));
       boxes[i] = {boxes[i].lower + shift, boxes[i].upper + shift};
-      moved[i] = 1;
+      moved[0] |= std::uint64_t{1} << i;
     }
     incremental.findPairs(boxes, moved, incrementalPairs);
     full.findPairs(boxes, fullPairs);
@@ -310,7 +310,7 @@ TEST(BroadPhase, FewBoxesRetestOnlyTheMovedOnes) {
   // A different box count: the promise is not used (box 0 moved but is not flagged).
   boxes.pop_back();
   boxes[0] = {boxes[0].lower + vec(3, 3), boxes[0].upper + vec(3, 3)};
-  moved.assign(boxes.size(), 0);
+  moved[0] = 0;
   incremental.findPairs(boxes, moved, incrementalPairs);
   expectSameAsBruteForce(boxes, incrementalPairs);
 }
