@@ -83,7 +83,8 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
   bodyStates_.push_back(state);  // not `known`: its first detection computes everything
   for (Primitive* primitive : object.primitives()) {
     const auto shape = static_cast<std::uint32_t>(shapes_.size());
-    shapes_.push_back({primitive, static_cast<std::uint32_t>(index), primitive->shapeType()});
+    shapes_.push_back(
+        {primitive, &object, static_cast<std::uint32_t>(index), 0, primitive->shapeType(), false});
     geometry_.push_back({});
     shapePoses_.push_back({});
     shapeMoved_.push_back(1);

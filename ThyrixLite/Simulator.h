@@ -122,8 +122,11 @@ class Simulator : public World {
   /// A primitive as the collision pipeline sees it.
   struct Shape {
     Primitive* primitive;
-    std::uint32_t body;  // index in objects
+    PhysicalObject* object;  // its body
+    std::uint32_t body;      // index in objects
+    std::uint32_t group;     // the body's collisionGroup, as of the last detection
     ShapeType type;
+    bool movable;  // the body's, as of the last detection
   };
   /// World geometry of a shape this step: circle centre in p0; capsule ends p0, p1;
   /// half-plane point p0 and normal p1.

@@ -29,67 +29,8 @@ std::uint64_t wordMask(std::size_t word, std::size_t count) {
 
 }  // namespace
 
-void Simulator::updateGeometry() {
-  // A new margin changes every shape's geometry; without rest skipping nothing is kept.
-  const bool everything =
-      !restSkipping || !sameBits(settings_.speculativeFraction, geometryFraction_);
-  geometryFraction_ = settings_.speculativeFraction;
-  sensingPrimitives_.clear();
-  unmovedShapes_ = 0;
-  gridMovedBits_.assign((gridShapes_.size() + 63) / 64, 0);
-  for (std::uint32_t index = 0; index < objects.size(); ++index) {
-    PhysicalObject& body = objects[index];
-    BodyState& state = bodyStates_[index];
-    // A body is unchanged if its pose and its collision filters are: its rigid parts are then
-    // where they were (followOwner would put them there again), unless moved by hand, which
-    // the parts' own poses show; so do parts placed by their owner (articulated links).
-    const bool changed = everything || !state.known || !sameBits(body.r, state.r) ||
-                         !sameBits(body.alpha, state.alpha) || body.fixed != state.fixed ||
-                         body.collisionGroup != state.group;
-    const bool known = state.known;
-    if (changed) {
-      state.r = body.r;
-      state.alpha = body.alpha;
-      state.fixed = body.fixed;
-      state.group = body.collisionGroup;
-      state.movable = movable(index);
-      state.known = true;
-    }
-    if (state.standalone) {  // a primitive of its own: its pose is the body's (common case)
-      const std::uint32_t s = state.firstShape;
-      Primitive& primitive = *shapes_[s].primitive;
-      if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
-      shapeMoved_[s] = changed ? 1 : 0;
-      if (!changed) {
-        ++unmovedShapes_;
-        continue;
-      }
-      updateShape(s, known);
-      updateBodyBox(index);
-      continue;
-    }
-    bool anyMoved = changed;
-    const std::uint32_t end = state.firstShape + state.shapeCount;
-    for (std::uint32_t s = state.firstShape; s < end; ++s) {
-      Primitive& primitive = *shapes_[s].primitive;
-      if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
-      const ShapePose& pose = shapePoses_[s];
-      const bool moved =
-          changed || !sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha);
-      shapeMoved_[s] = moved ? 1 : 0;
-      if (!moved) {
-        ++unmovedShapes_;
-        continue;
-      }
-      primitive.followOwner();
-      updateShape(s, known);
-      anyMoved = true;
-    }
-    if (anyMoved) updateBodyBox(index);
-  }
-}
-
-void Simulator::updateBodyBox(std::uint32_t index) {
+// Inline: called per moved shape from updateGeometry, the only caller.
+inline void Simulator::updateBodyBox(std::uint32_t index) {
   // The union of the body's shapes' boxes (margins excluded).
   PhysicalObject& body = objects[index];
   const BodyState& state = bodyStates_[index];
@@ -118,7 +59,7 @@ void Simulator::updateBodyBox(std::uint32_t index) {
   }
 }
 
-void Simulator::updateShape(std::uint32_t s, bool poseKnown) {
+inline void Simulator::updateShape(std::uint32_t s, bool poseKnown) {
   const Primitive& primitive = *shapes_[s].primitive;
   ShapePose& pose = shapePoses_[s];
   ShapeGeometry& g = geometry_[s];
@@ -153,6 +94,70 @@ void Simulator::updateShape(std::uint32_t s, bool poseKnown) {
     gridBoxes_[slot] = {
         Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} - reach,
         Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} + reach};
+  }
+}
+
+void Simulator::updateGeometry() {
+  // A new margin changes every shape's geometry; without rest skipping nothing is kept.
+  const bool everything =
+      !restSkipping || !sameBits(settings_.speculativeFraction, geometryFraction_);
+  geometryFraction_ = settings_.speculativeFraction;
+  sensingPrimitives_.clear();
+  unmovedShapes_ = 0;
+  gridMovedBits_.assign((gridShapes_.size() + 63) / 64, 0);
+  for (std::uint32_t index = 0; index < objects.size(); ++index) {
+    PhysicalObject& body = objects[index];
+    BodyState& state = bodyStates_[index];
+    // A body is unchanged if its pose and its collision filters are: its rigid parts are then
+    // where they were (followOwner would put them there again), unless moved by hand, which
+    // the parts' own poses show; so do parts placed by their owner (articulated links).
+    const bool changed = everything || !state.known || !sameBits(body.r, state.r) ||
+                         !sameBits(body.alpha, state.alpha) || body.fixed != state.fixed ||
+                         body.collisionGroup != state.group;
+    const bool known = state.known;
+    if (changed) {
+      state.r = body.r;
+      state.alpha = body.alpha;
+      state.fixed = body.fixed;
+      state.group = body.collisionGroup;
+      state.movable = movable(index);
+      state.known = true;
+      for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
+        shapes_[s].group = state.group;  // the filters, next to the shapes for the narrow phase
+        shapes_[s].movable = state.movable;
+      }
+    }
+    if (state.standalone) {  // a primitive of its own: its pose is the body's (common case)
+      const std::uint32_t s = state.firstShape;
+      Primitive& primitive = *shapes_[s].primitive;
+      if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
+      shapeMoved_[s] = changed ? 1 : 0;
+      if (!changed) {
+        ++unmovedShapes_;
+        continue;
+      }
+      updateShape(s, known);
+      updateBodyBox(index);
+      continue;
+    }
+    bool anyMoved = changed;
+    const std::uint32_t end = state.firstShape + state.shapeCount;
+    for (std::uint32_t s = state.firstShape; s < end; ++s) {
+      Primitive& primitive = *shapes_[s].primitive;
+      if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
+      const ShapePose& pose = shapePoses_[s];
+      const bool moved =
+          changed || !sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha);
+      shapeMoved_[s] = moved ? 1 : 0;
+      if (!moved) {
+        ++unmovedShapes_;
+        continue;
+      }
+      primitive.followOwner();
+      updateShape(s, known);
+      anyMoved = true;
+    }
+    if (anyMoved) updateBodyBox(index);
   }
 }
 
@@ -254,15 +259,12 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
   if (shapes_[shapeB].type < shapes_[shapeA].type) std::swap(shapeA, shapeB);
   const Shape& a = shapes_[shapeA];
   const Shape& b = shapes_[shapeB];
+  if (!a.movable && !b.movable) return;
+  if (a.group != 0 && a.group == b.group) return;
   if (a.body == b.body) {
     const MultiBodyObject* multi = multiBodies_[a.body];
     if (multi == nullptr || !multi->selfCollides(*a.primitive, *b.primitive)) return;
   }
-  // The filters as updateGeometry read them (compact, not from the objects themselves).
-  const BodyState& stateA = bodyStates_[a.body];
-  const BodyState& stateB = bodyStates_[b.body];
-  if (!stateA.movable && !stateB.movable) return;
-  if (stateA.group != 0 && stateA.group == stateB.group) return;
   const ShapeGeometry& ga = geometry_[shapeA];
   const ShapeGeometry& gb = geometry_[shapeB];
   const real margin = a.type == ShapeType::HalfPlane ? gb.margin : std::min(ga.margin, gb.margin);
@@ -270,9 +272,8 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
   const auto append = [&](const Manifold& manifold) {
     for (int i = 0; i < manifold.count; ++i) {
       const ManifoldPoint& p = manifold.points[i];
-      contacts.items_.push_back({&objects[a.body], &objects[b.body], a.primitive, b.primitive,
-                                 a.body, b.body, shapeA, shapeB, p.feature, p.point,
-                                 manifold.normal, p.depth, 0});
+      contacts.items_.push_back({a.object, b.object, a.primitive, b.primitive, a.body, b.body,
+                                 shapeA, shapeB, p.feature, p.point, manifold.normal, p.depth, 0});
     }
   };
   switch (a.type) {
@@ -282,9 +283,16 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
                  : collideHalfPlaneCapsule(ga.p0, ga.p1, gb.p0, gb.p1, gb.radius, margin));
       break;
     case ShapeType::Circle:
-      append(b.type == ShapeType::Circle
-                 ? collideCircles(ga.p0, ga.radius, gb.p0, gb.radius, margin)
-                 : collideCircleCapsule(ga.p0, ga.radius, gb.p0, gb.p1, gb.radius, margin));
+      if (b.type == ShapeType::Circle) {
+        // Most candidate pairs of a crowd are out of reach: a conservative test on squared
+        // distances (no square root, no call) drops them; the rest get the exact test.
+        const Vector2 d = gb.p0 - ga.p0;
+        const real reach = (ga.radius + gb.radius + margin) * (1 + 64 * realEpsilon);
+        if (d.lengthSquared() > reach * reach) return;
+        append(collideCircles(ga.p0, ga.radius, gb.p0, gb.radius, margin));
+      } else {
+        append(collideCircleCapsule(ga.p0, ga.radius, gb.p0, gb.p1, gb.radius, margin));
+      }
       break;
     case ShapeType::Capsule:
       append(collideCapsules(ga.p0, ga.p1, ga.radius, gb.p0, gb.p1, gb.radius, margin));
