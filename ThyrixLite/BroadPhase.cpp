@@ -38,8 +38,8 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPa
   findPairs(boxes, {}, pairs);
 }
 
-void BroadPhase::findPairs(std::span<const BoundingBox> boxes,
-                           std::span<const std::uint64_t> moved, std::vector<BoxPair>& pairs) {
+void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const std::uint64_t> moved,
+                           std::vector<BoxPair>& pairs) {
   pairs.clear();
   const auto count = static_cast<std::uint32_t>(boxes.size());
   // Few boxes: testing every pair is cheaper than building the grid (measured: a 22-body
@@ -166,8 +166,8 @@ void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, std::vector
   // One cell of padding on every side, so that the neighbours of every cell exist.
   const bool anyRegular = lowX <= highX;
   const auto limit = denseCellsPerBox * count + denseCellsMargin;
-  const bool dense = anyRegular && allowDenseGrid && highX - lowX < limit &&
-                     highY - lowY < limit && (highX - lowX + 3) * (highY - lowY + 3) <= limit;
+  const bool dense = anyRegular && allowDenseGrid && highX - lowX < limit && highY - lowY < limit &&
+                     (highX - lowX + 3) * (highY - lowY + 3) <= limit;
   if (dense)
     findPairsInDenseGrid(boxes, lowX - 1, lowY - 1, highX - lowX + 3, highY - lowY + 3, pairs);
   else

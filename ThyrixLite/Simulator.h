@@ -195,9 +195,9 @@ class Simulator : public World {
   std::vector<std::uint64_t> borderReach_;    // per border, a bit per grid shape behind it
   std::size_t reachShapes_ = 0;               // grid shapes borderReach_ was computed for
   std::vector<GlobalContactInfo> previousContacts_;  // the last detection's contacts
-  std::vector<std::uint32_t> previousStart_;  // previous contacts by shape A: offsets
-  std::vector<std::uint32_t> previousOrder_;  // previous contacts by shape A: indices
-  real geometryFraction_ = 0;    // speculativeFraction the cached margins were computed with
+  std::vector<std::uint32_t> previousStart_;         // previous contacts by shape A: offsets
+  std::vector<std::uint32_t> previousOrder_;         // previous contacts by shape A: indices
+  real geometryFraction_ = 0;      // speculativeFraction the cached margins were computed with
   bool contactsComplete_ = false;  // `contacts` holds exactly one detection's contacts
   bool previousValid_ = false;     // previousContacts_ is the last detection's, complete
   bool previousIndexed_ = false;   // previousStart_ and previousOrder_ are up to date

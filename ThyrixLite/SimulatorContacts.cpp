@@ -91,9 +91,8 @@ inline void Simulator::updateShape(std::uint32_t s, bool poseKnown) {
   if (shapes_[s].type == ShapeType::Circle) {
     gridBoxes_[slot] = {g.p0 - reach, g.p0 + reach};
   } else {
-    gridBoxes_[slot] = {
-        Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} - reach,
-        Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} + reach};
+    gridBoxes_[slot] = {Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} - reach,
+                        Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} + reach};
   }
 }
 
@@ -213,7 +212,8 @@ void Simulator::findBorderContacts(bool reuse) {
         if (dot(centre - point, normal) - extent <= 0) reach |= bits & (~bits + 1);
       }
       for (std::uint64_t bits = reach; bits != 0; bits &= bits - 1) {
-        const std::uint32_t shape = gridShapes_[64 * w + static_cast<std::size_t>(std::countr_zero(bits))];
+        const std::uint32_t shape =
+            gridShapes_[64 * w + static_cast<std::size_t>(std::countr_zero(bits))];
         if (reuse && !borderMoved && shapeMoved_[shape] == 0)
           reuseContacts(border, shape);
         else
