@@ -1,11 +1,13 @@
 #include <ThyrixLite/BroadPhase.h>
 
 #include <algorithm>
-#include <array>
+#include <bit>
 #include <cmath>
 
 namespace thyrix {
 namespace {
+
+static_assert(BroadPhase::smallCount <= 64, "few boxes keep their overlaps in 64-bit masks");
 
 std::uint32_t hashCell(std::int64_t x, std::int64_t y, std::uint32_t mask) {
   const auto h = static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull ^
@@ -18,22 +20,112 @@ real extent(const BoundingBox& box) {
 }
 
 constexpr std::uint32_t oversizedMark = ~0u;
+/// The dense grid is used while it has at most this many cells per box (plus a margin for
+/// small counts); sparser layouts hash their cells instead.
+constexpr std::int64_t denseCellsPerBox = 4;
+constexpr std::int64_t denseCellsMargin = 64;
+
+/// Hash buckets for @p count boxes: a power of two, at least twice the count.
+std::uint32_t bucketCountFor(std::uint32_t count) {
+  std::uint32_t buckets = 1;
+  while (buckets < 2 * count) buckets <<= 1;
+  return buckets;
+}
 
 }  // namespace
 
 void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
+  findPairs(boxes, {}, pairs);
+}
+
+void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const std::uint64_t> moved,
+                           std::vector<BoxPair>& pairs) {
   pairs.clear();
   const auto count = static_cast<std::uint32_t>(boxes.size());
-  if (count < 2) return;
   // Few boxes: testing every pair is cheaper than building the grid (measured: a 22-body
   // arena spent a quarter of its step in the grid).
   if (count <= smallCount) {
-    for (std::uint32_t i = 0; i < count; ++i)
-      for (std::uint32_t j = i + 1; j < count; ++j)
-        if (boxes[i].overlaps(boxes[j])) pairs.push_back({i, j});
+    const bool remembered = !moved.empty() && rememberedCount_ == count && count > 0;
+    findPairsAmongFew(boxes, remembered ? moved[0] : 0, remembered, pairs);
     return;
   }
+  rememberedCount_ = 0;
+  findPairsInGrid(boxes, pairs);
+}
 
+namespace {
+
+/// Bit j set when box j overlaps @p box (branch-free: every box is tested).
+std::uint64_t overlapRow(const BoundingBox& box, std::span<const BoundingBox> boxes) {
+  std::uint64_t row = 0;
+  for (std::uint32_t j = 0; j < boxes.size(); ++j) {
+    const BoundingBox& o = boxes[j];
+    const bool overlap = (box.lower.x <= o.upper.x) & (o.lower.x <= box.upper.x) &
+                         (box.lower.y <= o.upper.y) & (o.lower.y <= box.upper.y);
+    row |= std::uint64_t{overlap} << j;
+  }
+  return row;
+}
+
+/// Bits above @p i.
+std::uint64_t above(std::uint32_t i) { return ~std::uint64_t{0} << i << 1; }
+
+}  // namespace
+
+void BroadPhase::findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint64_t moved,
+                                   bool remembered, std::vector<BoxPair>& pairs) {
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  if (overlaps_.size() < count) {
+    overlaps_.resize(smallCount);
+    movedRows_.resize(smallCount);
+  }
+  if (!remembered) moved = count == 0 ? 0 : ~std::uint64_t{0} >> (64 - count);
+  // Only rows that had pairs, moved boxes, and boxes below a moved box that now meets them can
+  // change; every other row stays empty.
+  std::uint64_t visit = (remembered ? rowsWithPairs_ : 0) | moved;
+  for (std::uint64_t bits = moved; bits != 0; bits &= bits - 1) {
+    const auto m = static_cast<std::uint32_t>(std::countr_zero(bits));
+    movedRows_[m] = overlapRow(boxes[m], boxes) & ~(std::uint64_t{1} << m);
+    visit |= movedRows_[m] & ~above(m);
+  }
+  rowsWithPairs_ = 0;
+  for (; visit != 0; visit &= visit - 1) {
+    const auto i = static_cast<std::uint32_t>(std::countr_zero(visit));
+    std::uint64_t row;
+    if ((moved >> i) & 1) {
+      row = movedRows_[i] & above(i);
+    } else {
+      // Unmoved against unmoved: as last time; against the moved boxes above: their rows say.
+      row = overlaps_[i] & ~moved;
+      for (std::uint64_t m = moved & above(i); m != 0; m &= m - 1) {
+        const auto j = static_cast<std::uint32_t>(std::countr_zero(m));
+        row |= ((movedRows_[j] >> i) & 1) << j;
+      }
+    }
+    overlaps_[i] = row;
+    rowsWithPairs_ |= std::uint64_t{row != 0} << i;
+    for (; row != 0; row &= row - 1)
+      pairs.push_back({i, static_cast<std::uint32_t>(std::countr_zero(row))});
+  }
+  rememberedCount_ = count;
+}
+
+void BroadPhase::reserveFor(std::uint32_t count) {
+  // Sized for the box count, not for this call's layout: a layout that spreads later needs no
+  // more than the dense grid's limit or the hash table's buckets.
+  if (count <= reservedCount_) return;
+  const auto cells = static_cast<std::size_t>(denseCellsPerBox * count + denseCellsMargin);
+  cellStart_.reserve(std::max<std::size_t>(cells, bucketCountFor(count)) + 1);
+  cellCursor_.reserve(cellStart_.capacity());
+  for (auto* buffer : {&cellOfBox_, &sortedBoxes_, &oversized_}) buffer->reserve(count);
+  cellX_.reserve(count);
+  cellY_.reserve(count);
+  reservedCount_ = count;
+}
+
+void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  reserveFor(count);
   // Cells as small as the largest box allows (about one box per cell for similar sizes), but
   // no larger than twice the mean: rare big boxes are handled as oversized instead.
   real meanExtent = 0;
@@ -45,16 +137,15 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPa
   meanExtent /= static_cast<real>(count);
   const real cellSize = std::max(std::min(maxExtent, 2 * meanExtent), realEpsilon);
 
-  std::uint32_t bucketCount = 1;
-  while (bucketCount < 2 * count) bucketCount <<= 1;
-  const std::uint32_t mask = bucketCount - 1;
-
-  // Cells of the regular boxes, and the bucket sizes.
+  // Cell coordinates of the regular boxes, and the rectangle of cells they span.
   cellOfBox_.resize(count);
   cellX_.resize(count);
   cellY_.resize(count);
-  bucketStart_.assign(bucketCount + 1, 0);
   oversized_.clear();
+  std::int64_t lowX = INT64_MAX;
+  std::int64_t lowY = INT64_MAX;
+  std::int64_t highX = INT64_MIN;
+  std::int64_t highY = INT64_MIN;
   for (std::uint32_t i = 0; i < count; ++i) {
     const BoundingBox& box = boxes[i];
     if (extent(box) > cellSize) {
@@ -65,16 +156,91 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPa
     const Vector2 centre = (box.lower + box.upper) * real(0.5);
     cellX_[i] = static_cast<std::int64_t>(std::floor(centre.x / cellSize));
     cellY_[i] = static_cast<std::int64_t>(std::floor(centre.y / cellSize));
-    cellOfBox_[i] = hashCell(cellX_[i], cellY_[i], mask);
-    ++bucketStart_[cellOfBox_[i] + 1];
+    cellOfBox_[i] = 0;
+    lowX = std::min(lowX, cellX_[i]);
+    lowY = std::min(lowY, cellY_[i]);
+    highX = std::max(highX, cellX_[i]);
+    highY = std::max(highY, cellY_[i]);
   }
-  for (std::uint32_t b = 0; b < bucketCount; ++b) bucketStart_[b + 1] += bucketStart_[b];
+
+  // One cell of padding on every side, so that the neighbours of every cell exist.
+  const bool anyRegular = lowX <= highX;
+  const auto limit = denseCellsPerBox * count + denseCellsMargin;
+  const bool dense = anyRegular && allowDenseGrid && highX - lowX < limit && highY - lowY < limit &&
+                     (highX - lowX + 3) * (highY - lowY + 3) <= limit;
+  if (dense)
+    findPairsInDenseGrid(boxes, lowX - 1, lowY - 1, highX - lowX + 3, highY - lowY + 3, pairs);
+  else
+    findPairsInHashedGrid(boxes, pairs);
+
+  // Oversized boxes against everything (each pair once).
+  for (const std::uint32_t big : oversized_) {
+    for (std::uint32_t j = 0; j < count; ++j) {
+      if (j == big || (cellOfBox_[j] == oversizedMark && j < big)) continue;
+      if (boxes[big].overlaps(boxes[j])) pairs.push_back({std::min(big, j), std::max(big, j)});
+    }
+  }
+}
+
+void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::int64_t lowX,
+                                      std::int64_t lowY, std::int64_t columns, std::int64_t rows,
+                                      std::vector<BoxPair>& pairs) {
+  // Cells column by column: cell (x, y) is number (x - lowX) * rows + (y - lowY), so the three
+  // cells of the next column around a box's row are consecutive, and so are its own cell and
+  // the one above.
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  const auto cellCount = static_cast<std::uint32_t>(columns * rows);
+  const auto stride = static_cast<std::uint32_t>(rows);
+  cellStart_.assign(cellCount + 1, 0);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    if (cellOfBox_[i] == oversizedMark) continue;
+    cellOfBox_[i] = static_cast<std::uint32_t>((cellX_[i] - lowX) * rows + (cellY_[i] - lowY));
+    ++cellStart_[cellOfBox_[i] + 1];
+  }
+  for (std::uint32_t c = 0; c < cellCount; ++c) cellStart_[c + 1] += cellStart_[c];
+  cellCursor_.assign(cellStart_.begin(), cellStart_.end() - 1);
+  sortedBoxes_.resize(cellStart_[cellCount]);
+  for (std::uint32_t i = 0; i < count; ++i)
+    if (cellOfBox_[i] != oversizedMark) sortedBoxes_[cellCursor_[cellOfBox_[i]]++] = i;
+
+  // The same visiting order as the hashed grid: own cell (higher indices), then the cells
+  // (x+1, y-1), (x+1, y), (x+1, y+1), then (x, y+1), each by increasing index.
+  const auto testRange = [&](std::uint32_t i, std::uint32_t begin, std::uint32_t end) {
+    for (std::uint32_t k = begin; k < end; ++k) {
+      const std::uint32_t j = sortedBoxes_[k];
+      if (boxes[i].overlaps(boxes[j])) pairs.push_back({std::min(i, j), std::max(i, j)});
+    }
+  };
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const std::uint32_t own = cellOfBox_[i];
+    if (own == oversizedMark) continue;
+    for (std::uint32_t k = cellStart_[own]; k < cellStart_[own + 1]; ++k) {
+      const std::uint32_t j = sortedBoxes_[k];
+      if (j > i && boxes[i].overlaps(boxes[j])) pairs.push_back({i, j});
+    }
+    testRange(i, cellStart_[own + stride - 1], cellStart_[own + stride + 2]);
+    testRange(i, cellStart_[own + 1], cellStart_[own + 2]);
+  }
+}
+
+void BroadPhase::findPairsInHashedGrid(std::span<const BoundingBox> boxes,
+                                       std::vector<BoxPair>& pairs) {
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  const std::uint32_t bucketCount = bucketCountFor(count);
+  const std::uint32_t mask = bucketCount - 1;
+  cellStart_.assign(bucketCount + 1, 0);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    if (cellOfBox_[i] == oversizedMark) continue;
+    cellOfBox_[i] = hashCell(cellX_[i], cellY_[i], mask);
+    ++cellStart_[cellOfBox_[i] + 1];
+  }
+  for (std::uint32_t b = 0; b < bucketCount; ++b) cellStart_[b + 1] += cellStart_[b];
 
   // Counting sort in index order, so each bucket lists its boxes by increasing index.
-  bucketCursor_.assign(bucketStart_.begin(), bucketStart_.end() - 1);
-  sortedBoxes_.resize(bucketStart_[bucketCount]);
+  cellCursor_.assign(cellStart_.begin(), cellStart_.end() - 1);
+  sortedBoxes_.resize(cellStart_[bucketCount]);
   for (std::uint32_t i = 0; i < count; ++i)
-    if (cellOfBox_[i] != oversizedMark) sortedBoxes_[bucketCursor_[cellOfBox_[i]]++] = i;
+    if (cellOfBox_[i] != oversizedMark) sortedBoxes_[cellCursor_[cellOfBox_[i]]++] = i;
 
   // Regular pairs. A box can only overlap boxes whose centres lie in the 3 x 3 cells around
   // its own; visiting its own cell (higher indices only) and the four "forward" cells (all
@@ -86,26 +252,18 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPa
     const std::int64_t x = cellX_[i];
     const std::int64_t y = cellY_[i];
     const std::uint32_t own = cellOfBox_[i];
-    for (std::uint32_t k = bucketStart_[own]; k < bucketStart_[own + 1]; ++k) {
+    for (std::uint32_t k = cellStart_[own]; k < cellStart_[own + 1]; ++k) {
       const std::uint32_t j = sortedBoxes_[k];
       if (j > i && cellX_[j] == x && cellY_[j] == y && boxes[i].overlaps(boxes[j]))
         pairs.push_back({i, j});
     }
     for (const auto& [dx, dy] : forward) {
       const std::uint32_t bucket = hashCell(x + dx, y + dy, mask);
-      for (std::uint32_t k = bucketStart_[bucket]; k < bucketStart_[bucket + 1]; ++k) {
+      for (std::uint32_t k = cellStart_[bucket]; k < cellStart_[bucket + 1]; ++k) {
         const std::uint32_t j = sortedBoxes_[k];
         if (cellX_[j] == x + dx && cellY_[j] == y + dy && boxes[i].overlaps(boxes[j]))
           pairs.push_back({std::min(i, j), std::max(i, j)});
       }
-    }
-  }
-
-  // Oversized boxes against everything (each pair once).
-  for (const std::uint32_t big : oversized_) {
-    for (std::uint32_t j = 0; j < count; ++j) {
-      if (j == big || (cellOfBox_[j] == oversizedMark && j < big)) continue;
-      if (boxes[big].overlaps(boxes[j])) pairs.push_back({std::min(big, j), std::max(big, j)});
     }
   }
 }

@@ -28,27 +28,64 @@ struct BoxPair {
   std::uint32_t second;  ///< higher index
 };
 
-/// A uniform grid rebuilt every step by counting sort into hashed cells.
+/// Finds every pair of overlapping boxes.
 ///
-/// The cell side is twice the mean box size; a box larger than a cell is "oversized" and is
-/// tested against all boxes (few such boxes keep this linear). Every other box lies in one cell
-/// (by its centre) and can only overlap boxes in the 3 x 3 neighbouring cells. The output order
-/// depends only on the input, so runs are reproducible. Buffers are kept between calls: once
-/// warmed up, finding pairs allocates nothing.
+/// Up to smallCount boxes, every pair is tested, and the result is remembered as one bit mask
+/// per box: a later call that is told which boxes moved tests only the pairs with a moved box.
+/// Above, boxes go into a uniform grid rebuilt every call by counting sort; the cell side is as
+/// small as the largest box allows (at most twice the mean), and a box larger than a cell is
+/// "oversized" and tested against all boxes (few such boxes keep this linear). Every other box
+/// lies in one cell (by its centre) and can only overlap boxes in the 3 x 3 neighbouring cells.
+/// The grid is a dense array of cells when the boxes fill their bounding rectangle well (piles:
+/// neighbouring cells are then contiguous in memory), else a hash table of cells (scattered
+/// boxes). Both give the same pairs in the same order.
+///
+/// The output order depends only on the input, so runs are reproducible. Buffers are kept
+/// between calls: once warmed up with as many boxes, finding pairs allocates nothing.
 class BroadPhase {
  public:
-  /// Up to this many boxes, every pair is tested directly.
+  /// Up to this many boxes, every pair is tested directly (and remembered, see above).
   static constexpr std::uint32_t smallCount = 48;
 
-  /// Replaces @p pairs with every overlapping pair of @p boxes.
+  /// Replaces @p pairs with every overlapping pair of @p boxes, ordered by first then second
+  /// up to smallCount boxes.
   void findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
 
+  /// The same pairs in the same order as findPairs(boxes, pairs), faster when few boxes moved:
+  /// a box whose bit in @p moved is 0 (bit `i % 64` of word `i / 64` for box i) is promised to
+  /// be the same as in the last call (same index, same corners), so its overlaps with other
+  /// such boxes are not tested again. The promise is only used when the last call had as many
+  /// boxes, and up to smallCount boxes; otherwise every pair is tested.
+  void findPairs(std::span<const BoundingBox> boxes, std::span<const std::uint64_t> moved,
+                 std::vector<BoxPair>& pairs);
+
+  /// With false the grid always hashes its cells (for tests comparing the two grids).
+  bool allowDenseGrid = true;
+
  private:
-  std::vector<std::uint32_t> cellOfBox_;     // hashed cell of each regular box
+  void findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint64_t moved, bool remembered,
+                         std::vector<BoxPair>& pairs);
+  void findPairsInGrid(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
+  void findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::int64_t lowX,
+                            std::int64_t lowY, std::int64_t columns, std::int64_t rows,
+                            std::vector<BoxPair>& pairs);
+  void findPairsInHashedGrid(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
+  void reserveFor(std::uint32_t count);
+
+  // Few boxes: bit j of overlaps_[i] is set when boxes i < j overlap (last call's result);
+  // bit i of rowsWithPairs_ when overlaps_[i] is not zero.
+  std::vector<std::uint64_t> overlaps_;
+  std::vector<std::uint64_t> movedRows_;  // a moved box's overlaps with every other box
+  std::uint64_t rowsWithPairs_ = 0;
+  std::uint32_t rememberedCount_ = 0;  // boxes of the call overlaps_ describes (0: none)
+
+  // Grid.
+  std::uint32_t reservedCount_ = 0;          // box count the grid buffers are sized for
+  std::vector<std::uint32_t> cellOfBox_;     // cell (dense) or bucket (hashed) of each box
   std::vector<std::int64_t> cellX_, cellY_;  // integer cell coordinates of each regular box
-  std::vector<std::uint32_t> bucketStart_;   // counting-sort offsets, one per hash bucket + 1
-  std::vector<std::uint32_t> bucketCursor_;  // fill position of each bucket during the sort
-  std::vector<std::uint32_t> sortedBoxes_;   // regular boxes grouped by bucket, by index within
+  std::vector<std::uint32_t> cellStart_;     // counting-sort offsets, one per cell/bucket + 1
+  std::vector<std::uint32_t> cellCursor_;    // fill position of each cell during the sort
+  std::vector<std::uint32_t> sortedBoxes_;   // regular boxes grouped by cell, by index within
   std::vector<std::uint32_t> oversized_;     // boxes larger than a cell
 };
 

@@ -4,6 +4,9 @@
 
 #include <ThyrixLite/ObjectList.h>
 
+#include <cstdint>
+#include <span>
+
 namespace thyrix {
 
 /// Explicit Euler: every object's `integrate(dt)` moves it by its velocity over @p dt
@@ -13,6 +16,11 @@ class Integrator {
  public:
   /// Calls `integrate(dt)` on each object in registration order.
   void integrate(const ObjectList& objects, real dt) const;
+  /// The same, but objects whose flag in @p defaultIntegration is set are moved by
+  /// PhysicalObject::integrate directly, without a virtual call (the simulator sets the flag
+  /// for the core shapes, which do not override it).
+  void integrate(const ObjectList& objects, std::span<const std::uint8_t> defaultIntegration,
+                 real dt) const;
 };
 
 }  // namespace thyrix

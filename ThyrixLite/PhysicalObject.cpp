@@ -4,18 +4,6 @@
 
 namespace thyrix {
 
-void PhysicalObject::computeDerivativesWithoutContacts() {
-  if (fixed) {
-    v = {};
-    omega = 0;
-  } else {
-    v = externalForce / m;
-    omega = externalTorque / I;
-  }
-  externalForce = {};
-  externalTorque = 0;
-}
-
 void PhysicalObject::control() {}
 
 void PhysicalObject::updateSensors(const World& /*world*/) {}
@@ -23,12 +11,6 @@ void PhysicalObject::updateSensors(const World& /*world*/) {}
 std::span<const VisualSensor> PhysicalObject::visualSensors() const { return {}; }
 
 void PhysicalObject::onRegistered(Simulator& /*simulator*/) noexcept {}
-
-void PhysicalObject::integrate(real dt) {
-  if (fixed) return;
-  r += v * dt;
-  alpha += omega * dt;
-}
 
 void PhysicalObject::validate() const {
   const std::string type = typeName();

@@ -55,14 +55,28 @@ class PhysicalObject : public GraphicalObject {
 
   /// Phase 5 of a step: velocities from the accumulated external force and torque alone,
   /// `v = F / m`, `omega = torque / I`; the accumulators are then reset to zero.
-  virtual void computeDerivativesWithoutContacts();
+  virtual void computeDerivativesWithoutContacts() {
+    if (fixed) {
+      v = {};
+      omega = 0;
+    } else {
+      v = externalForce / m;
+      omega = externalTorque / I;
+    }
+    externalForce = {};
+    externalTorque = 0;
+  }
 
   /// Phase 7 of a step: sensors to controller to motor forces for the next step.
   /// The default does nothing (a passive object).
   virtual void control();
 
   /// Phase 8 of a step: moves the body by its velocity for @p dt (explicit Euler).
-  virtual void integrate(real dt);
+  virtual void integrate(real dt) {
+    if (fixed) return;
+    r += v * dt;
+    alpha += omega * dt;
+  }
 
   /// Checks the state before registration; throws InvalidArgument naming the field.
   virtual void validate() const;

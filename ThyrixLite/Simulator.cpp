@@ -1,10 +1,15 @@
 /// @file Simulator.cpp
 /// @brief Registration, the order of one step, and dragging.
+#include <ThyrixLite/Border.h>
+#include <ThyrixLite/CappedRectangle.h>
+#include <ThyrixLite/Circle.h>
+#include <ThyrixLite/ComposedPhysicalObject.h>
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixLite/Simulator.h>
 
 #include <algorithm>
 #include <cmath>
+#include <typeinfo>
 
 namespace thyrix {
 namespace {
@@ -14,6 +19,16 @@ namespace {
 template <class T>
 void reserveFor(std::vector<T>& vector, std::size_t needed) {
   if (needed > vector.capacity()) vector.reserve(std::max(needed, 2 * vector.capacity()));
+}
+
+/// True when @p object is exactly one of the core classes that keep PhysicalObject's step hooks
+/// (computeDerivativesWithoutContacts, control, integrate, updateSensors): the simulator then
+/// runs them without a virtual call, and skips the empty ones. Any other class, a user's
+/// subclass of Circle included, is called through its virtual hooks.
+bool hasDefaultHooks(const PhysicalObject& object) {
+  const std::type_info& type = typeid(object);
+  return type == typeid(Circle) || type == typeid(CappedRectangle) || type == typeid(Border) ||
+         type == typeid(ComposedPhysicalObject);
 }
 
 }  // namespace
@@ -43,20 +58,49 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
   reserveFor(touchedStamp_, objects.size() + added.size());
   reserveFor(multiBodies_, objects.size() + added.size());
   reserveFor(objectContactStart_, objects.size() + added.size() + 1);
+  // Rest skipping's memory of the shapes and bodies.
+  std::size_t borders = borderShapes_.size();
+  for (const PhysicalObject* object : added)
+    for (const Primitive* primitive : object->primitives())
+      borders += primitive->shapeType() == ShapeType::HalfPlane ? 1 : 0;
+  const std::size_t gridShapes = gridShapes_.size() + shapes - (borders - borderShapes_.size());
+  const std::size_t words = (gridShapes + 63) / 64;
+  reserveFor(bodyStates_, objects.size() + added.size());
+  reserveFor(defaultHooks_, objects.size() + added.size());
+  reserveFor(customObjects_, objects.size() + added.size());
+  reserveFor(listedObjects_, objects.size() + added.size());
+  reserveFor(shapePoses_, shapes_.size() + shapes);
+  reserveFor(shapeMoved_, shapes_.size() + shapes);
+  reserveFor(gridSlot_, shapes_.size() + shapes);
+  reserveFor(gridMovedBits_, words);
+  reserveFor(borderReach_, borders * words);
+  reserveFor(previousStart_, shapes_.size() + shapes + 1);
 }
 
 void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) noexcept {
+  BodyState state;
+  state.firstShape = static_cast<std::uint32_t>(shapes_.size());
+  state.shapeCount = static_cast<std::uint32_t>(object.primitives().size());
+  state.standalone = state.shapeCount == 1 && object.primitives()[0] == &object;
+  bodyStates_.push_back(state);  // not `known`: its first detection computes everything
   for (Primitive* primitive : object.primitives()) {
     const auto shape = static_cast<std::uint32_t>(shapes_.size());
-    shapes_.push_back({primitive, static_cast<std::uint32_t>(index), primitive->shapeType()});
+    shapes_.push_back(
+        {primitive, &object, static_cast<std::uint32_t>(index), 0, primitive->shapeType(), false});
     geometry_.push_back({});
+    shapePoses_.push_back({});
+    shapeMoved_.push_back(1);
     if (primitive->shapeType() == ShapeType::HalfPlane) {
       borderShapes_.push_back(shape);
+      gridSlot_.push_back(~0u);
     } else {
+      gridSlot_.push_back(static_cast<std::uint32_t>(gridShapes_.size()));
       gridShapes_.push_back(shape);
       gridBoxes_.push_back({});
     }
   }
+  defaultHooks_.push_back(hasDefaultHooks(object) ? 1 : 0);
+  if (defaultHooks_.back() == 0) customObjects_.push_back(static_cast<std::uint32_t>(index));
   bodies_.push_back({});
   movable_.push_back(0);
   touchedStamp_.push_back(0);
@@ -67,6 +111,8 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
 
 void Simulator::reserveContacts(std::size_t count) {
   contacts.items_.reserve(count);
+  previousContacts_.reserve(count);  // the two swap at each step
+  previousOrder_.reserve(count);
   objectContacts_.reserve(2 * count);
   pairs_.reserve(count);
   rows_.reserve(count);
@@ -94,17 +140,29 @@ void Simulator::advanceTime() {
   detectContacts();
   indexContacts();
   applyMouseForce();
-  for (PhysicalObject& object : objects) object.computeDerivativesWithoutContacts();
+  // In registration order (an elastoid pushes its bodies, registered after it, before they
+  // compute their velocities); the core shapes without a virtual call.
+  for (std::uint32_t i = 0; i < objects.size(); ++i) {
+    PhysicalObject& object = objects[i];
+    if (defaultHooks_[i] != 0)
+      object.PhysicalObject::computeDerivativesWithoutContacts();
+    else
+      object.computeDerivativesWithoutContacts();
+  }
   solveContacts();
-  for (PhysicalObject& object : objects) object.control();
-  integrator.integrate(objects, timestep_);
+  for (const std::uint32_t i : customObjects_) objects[i].control();  // the others do nothing
+  integrator.integrate(objects, defaultHooks_, timestep_);
   ++stepCount_;
   time_ += timestep_;
 }
 
 void Simulator::eraseContacts() {
+  // Last step's contacts are what rest skipping reuses: kept aside, not destroyed.
+  previousValid_ = contactsComplete_;
+  if (contactsComplete_) std::swap(contacts.items_, previousContacts_);
   contacts.items_.clear();
-  for (PhysicalObject& object : objects) object.contacts = {};
+  contactsComplete_ = false;
+  clearContactLists();
 }
 
 void Simulator::startDrag(PhysicalObject& object, Vector2 grabPoint) {

@@ -22,6 +22,7 @@ namespace thyrix {
 /// What the last step did, for monitoring and benchmarks.
 struct StepStatistics {
   std::size_t contacts = 0;           ///< contact points detected
+  std::size_t reusedContacts = 0;     ///< of which kept from the last step (rest skipping)
   std::size_t islands = 0;            ///< islands with at least one contact
   std::size_t solvedIslands = 0;      ///< islands whose contacts needed forces
   std::size_t gaussSeidelSweeps = 0;  ///< sweeps summed over the islands Gauss-Seidel solved
@@ -64,6 +65,12 @@ class Simulator : public World {
   /// Phase 6: contact forces (the chosen solver, island by island), then final velocities;
   /// the tactile sensors then read the forces.
   void solveContacts();
+
+  /// Rest skipping (exact, on by default): a shape whose pose did not change since the last
+  /// detection keeps its geometry and box, and two such shapes keep the last detection's
+  /// contacts instead of being tested again. The results are bit-identical either way; turn
+  /// it off only to compare.
+  bool restSkipping = true;
 
   /// Sizes the per-step buffers for up to @p count contacts (and, with articulated agents
   /// registered, islands of up to 256 rows), so that steps with no more contacts than that
@@ -116,8 +123,11 @@ class Simulator : public World {
   /// A primitive as the collision pipeline sees it.
   struct Shape {
     Primitive* primitive;
-    std::uint32_t body;  // index in objects
+    PhysicalObject* object;  // its body
+    std::uint32_t body;      // index in objects
+    std::uint32_t group;     // the body's collisionGroup, as of the last detection
     ShapeType type;
+    bool movable;  // the body's, as of the last detection
   };
   /// World geometry of a shape this step: circle centre in p0; capsule ends p0, p1;
   /// half-plane point p0 and normal p1.
@@ -128,8 +138,33 @@ class Simulator : public World {
     real margin;
   };
 
+  /// What detection remembers of a body, to notice that it moved or changed its filters.
+  struct BodyState {
+    Vector2 r;
+    real alpha = 0;
+    std::uint32_t group = 0;       // collisionGroup
+    std::uint32_t firstShape = 0;  // its shapes are firstShape, firstShape + 1, ...
+    std::uint32_t shapeCount = 0;
+    bool fixed = false;
+    bool movable = false;
+    bool known = false;       // false until its first detection
+    bool standalone = false;  // the body is its one primitive
+  };
+  /// The pose of a primitive its geometry was computed from, and its capsule half axis.
+  struct ShapePose {
+    Vector2 r;
+    real alpha = 0;
+    Vector2 axis;
+  };
+
   void updateGeometry();
+  void updateBodyBox(std::uint32_t body);
+  void updateShape(std::uint32_t shape, bool poseKnown);
+  void findBorderContacts(bool reuse);
   void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);
+  void reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB);
+  void indexPreviousContacts();
+  void clearContactLists();
   void solveIsland(std::span<const std::uint32_t> island);
   void solveGeneralIsland(std::span<const std::uint32_t> island);
   /// Shape @p shape is a circle that is its own body (not a part of a composed body): its
@@ -158,9 +193,30 @@ class Simulator : public World {
   std::vector<BoundingBox> gridBoxes_;
   std::vector<BoxPair> pairs_;
   BroadPhase broadPhase_;
+  // Rest skipping (SimulatorContacts.cpp): what the last detection saw.
+  std::vector<BodyState> bodyStates_;
+  std::vector<ShapePose> shapePoses_;
+  std::vector<std::uint8_t> shapeMoved_;      // per shape: geometry recomputed this detection
+  std::vector<std::uint32_t> gridSlot_;       // per shape: its index in gridShapes_
+  std::vector<std::uint64_t> gridMovedBits_;  // a bit per grid shape: moved this detection
+  std::vector<std::uint64_t> borderReach_;    // per border, a bit per grid shape behind it
+  std::size_t reachShapes_ = 0;               // grid shapes borderReach_ was computed for
+  std::vector<GlobalContactInfo> previousContacts_;  // the last detection's contacts
+  std::vector<std::uint32_t> previousStart_;         // previous contacts by shape A: offsets
+  std::vector<std::uint32_t> previousOrder_;         // previous contacts by shape A: indices
+  real geometryFraction_ = 0;      // speculativeFraction the cached margins were computed with
+  bool contactsComplete_ = false;  // `contacts` holds exactly one detection's contacts
+  bool previousValid_ = false;     // previousContacts_ is the last detection's, complete
+  bool previousIndexed_ = false;   // previousStart_ and previousOrder_ are up to date
+  std::size_t unmovedShapes_ = 0;  // this detection
+  // Per object: 1 when it keeps PhysicalObject's step hooks (called without virtual calls);
+  // the others, in registration order.
+  std::vector<std::uint8_t> defaultHooks_;
+  std::vector<std::uint32_t> customObjects_;
 
   std::vector<ContactInfo> objectContacts_;        // every object's contacts, object by object
   std::vector<std::uint32_t> objectContactStart_;  // where each object's contacts begin
+  std::vector<std::uint32_t> listedObjects_;       // objects whose `contacts` is not empty
 
   std::vector<SolverBody> bodies_;  // valid for the bodies in touched_ only
   std::vector<std::uint8_t> movable_;

@@ -5,139 +5,307 @@
 #include <ThyrixLite/Simulator.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <type_traits>
 
 namespace thyrix {
 
-void Simulator::updateGeometry() {
-  const real fraction = settings_.speculativeFraction;
-  for (PhysicalObject& object : objects) {
-    object.boxMin = {realMax, realMax};
-    object.boxMax = {-realMax, -realMax};
-  }
-  sensingPrimitives_.clear();
-  for (std::size_t s = 0; s < shapes_.size(); ++s) {
-    Primitive& primitive = *shapes_[s].primitive;
-    primitive.followOwner();
-    if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
-    ShapeGeometry& g = geometry_[s];
-    g.radius = primitive.radius();
-    g.margin = fraction * g.radius;
+namespace {
+
+/// Bitwise equality: a pose is unchanged only if its bits are (so -0 differs from +0, and a
+/// NaN equals itself), which is what makes reusing results exact.
+bool sameBits(real a, real b) {
+  using Bits = std::conditional_t<sizeof(real) == 8, std::uint64_t, std::uint32_t>;
+  return std::bit_cast<Bits>(a) == std::bit_cast<Bits>(b);
+}
+bool sameBits(Vector2 a, Vector2 b) { return sameBits(a.x, b.x) && sameBits(a.y, b.y); }
+
+/// Bits 0 to count - 1 of word @p word of a bit set of @p count bits.
+std::uint64_t wordMask(std::size_t word, std::size_t count) {
+  const std::size_t rest = count - 64 * word;
+  return rest >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << rest) - 1;
+}
+
+}  // namespace
+
+// Inline: called per moved shape from updateGeometry, the only caller.
+inline void Simulator::updateBodyBox(std::uint32_t index) {
+  // The union of the body's shapes' boxes (margins excluded).
+  PhysicalObject& body = objects[index];
+  const BodyState& state = bodyStates_[index];
+  body.boxMin = {realMax, realMax};
+  body.boxMax = {-realMax, -realMax};
+  for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
+    const ShapeGeometry& g = geometry_[s];
     Vector2 lower;
     Vector2 upper;
     switch (shapes_[s].type) {
       case ShapeType::HalfPlane:
-        g.p0 = primitive.r;
-        g.p1 = static_cast<const Border&>(primitive).normal();
         continue;  // unbounded: no box
       case ShapeType::Circle:
-        g.p0 = primitive.r;
         lower = g.p0 - Vector2{g.radius, g.radius};
         upper = g.p0 + Vector2{g.radius, g.radius};
         break;
-      case ShapeType::Capsule: {
-        const Vector2 axis = primitive.direction() * primitive.halfLength();
-        g.p0 = primitive.r - axis;
-        g.p1 = primitive.r + axis;
+      case ShapeType::Capsule:
         lower = Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} -
                 Vector2{g.radius, g.radius};
         upper = Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} +
                 Vector2{g.radius, g.radius};
         break;
-      }
     }
-    PhysicalObject& body = objects[shapes_[s].body];
     body.boxMin = {std::min(body.boxMin.x, lower.x), std::min(body.boxMin.y, lower.y)};
     body.boxMax = {std::max(body.boxMax.x, upper.x), std::max(body.boxMax.y, upper.y)};
   }
-  for (std::size_t i = 0; i < gridShapes_.size(); ++i) {
-    const std::uint32_t s = gridShapes_[i];
-    // The shape's own box (not the body's), widened by its speculative margin.
-    const ShapeGeometry& g = geometry_[s];
-    const Vector2 reach{g.radius + g.margin, g.radius + g.margin};
-    if (shapes_[s].type == ShapeType::Circle) {
-      gridBoxes_[i] = {g.p0 - reach, g.p0 + reach};
-    } else {
-      gridBoxes_[i] = {Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} - reach,
-                       Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} + reach};
+}
+
+inline void Simulator::updateShape(std::uint32_t s, bool poseKnown) {
+  Primitive& primitive = *shapes_[s].primitive;
+  ShapePose& pose = shapePoses_[s];
+  ShapeGeometry& g = geometry_[s];
+  g.radius = primitive.radius();
+  g.margin = settings_.speculativeFraction * g.radius;
+  switch (shapes_[s].type) {
+    case ShapeType::HalfPlane:
+      g.p0 = primitive.r;
+      g.p1 = static_cast<const Border&>(primitive).normal();
+      break;
+    case ShapeType::Circle:
+      g.p0 = primitive.r;  // a circle's geometry does not depend on its angle
+      break;
+    case ShapeType::Capsule:
+      // The half axis turns with the angle only: a capsule that slides keeps it.
+      if (!poseKnown || !sameBits(primitive.alpha, pose.alpha))
+        // direction() is cached by the primitive, or set by an owner that placed it with
+        // the (cos, sin) it already had (articulated links): no sine or cosine here then.
+        pose.axis = primitive.direction() * primitive.halfLength();
+      g.p0 = primitive.r - pose.axis;
+      g.p1 = primitive.r + pose.axis;
+      break;
+  }
+  pose.r = primitive.r;
+  pose.alpha = primitive.alpha;
+  const std::uint32_t slot = gridSlot_[s];
+  if (slot == ~0u) return;
+  gridMovedBits_[slot / 64] |= std::uint64_t{1} << (slot % 64);
+  // The shape's own box (not the body's), widened by its speculative margin.
+  const Vector2 reach{g.radius + g.margin, g.radius + g.margin};
+  if (shapes_[s].type == ShapeType::Circle) {
+    gridBoxes_[slot] = {g.p0 - reach, g.p0 + reach};
+  } else {
+    gridBoxes_[slot] = {Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} - reach,
+                        Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} + reach};
+  }
+}
+
+void Simulator::updateGeometry() {
+  // A new margin changes every shape's geometry; without rest skipping nothing is kept.
+  const bool everything =
+      !restSkipping || !sameBits(settings_.speculativeFraction, geometryFraction_);
+  geometryFraction_ = settings_.speculativeFraction;
+  sensingPrimitives_.clear();
+  unmovedShapes_ = 0;
+  gridMovedBits_.assign((gridShapes_.size() + 63) / 64, 0);
+  for (std::uint32_t index = 0; index < objects.size(); ++index) {
+    PhysicalObject& body = objects[index];
+    BodyState& state = bodyStates_[index];
+    // A body is unchanged if its pose and its collision filters are: its rigid parts are then
+    // where they were (followOwner would put them there again), unless moved by hand, which
+    // the parts' own poses show; so do parts placed by their owner (articulated links).
+    const bool changed = everything || !state.known || !sameBits(body.r, state.r) ||
+                         !sameBits(body.alpha, state.alpha) || body.fixed != state.fixed ||
+                         body.collisionGroup != state.group;
+    const bool known = state.known;
+    if (changed) {
+      state.r = body.r;
+      state.alpha = body.alpha;
+      state.fixed = body.fixed;
+      state.group = body.collisionGroup;
+      state.movable = movable(index);
+      state.known = true;
+      for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
+        shapes_[s].group = state.group;  // the filters, next to the shapes for the narrow phase
+        shapes_[s].movable = state.movable;
+      }
     }
+    if (state.standalone) {  // a primitive of its own: its pose is the body's (common case)
+      const std::uint32_t s = state.firstShape;
+      Primitive& primitive = *shapes_[s].primitive;
+      if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
+      shapeMoved_[s] = changed ? 1 : 0;
+      if (!changed) {
+        ++unmovedShapes_;
+        continue;
+      }
+      updateShape(s, known);
+      updateBodyBox(index);
+      continue;
+    }
+    bool anyMoved = changed;
+    const std::uint32_t end = state.firstShape + state.shapeCount;
+    for (std::uint32_t s = state.firstShape; s < end; ++s) {
+      Primitive& primitive = *shapes_[s].primitive;
+      if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
+      const ShapePose& pose = shapePoses_[s];
+      const bool moved =
+          changed || !sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha);
+      shapeMoved_[s] = moved ? 1 : 0;
+      if (!moved) {
+        ++unmovedShapes_;
+        continue;
+      }
+      primitive.followOwner();
+      updateShape(s, known);
+      anyMoved = true;
+    }
+    if (anyMoved) updateBodyBox(index);
   }
 }
 
 void Simulator::detectContacts() {
+  // Appending to contacts of another detection: this list is no basis for the next reuse.
+  const bool fromEmpty = contacts.empty();
   updateGeometry();
-  broadPhase_.findPairs(gridBoxes_, pairs_);
-  for (const BoxPair& pair : pairs_) addContacts(gridShapes_[pair.first], gridShapes_[pair.second]);
-  for (const std::uint32_t border : borderShapes_) {
+  // Reuse needs the last detection's complete list (eraseContacts kept it aside).
+  const bool reuse = restSkipping && previousValid_ && fromEmpty && unmovedShapes_ > 0;
+  previousIndexed_ = false;
+  statistics_.reusedContacts = 0;
+  broadPhase_.findPairs(gridBoxes_, gridMovedBits_, pairs_);
+  for (const BoxPair& pair : pairs_) {
+    const std::uint32_t a = gridShapes_[pair.first];
+    const std::uint32_t b = gridShapes_[pair.second];
+    if (reuse && (shapeMoved_[a] | shapeMoved_[b]) == 0)
+      reuseContacts(a, b);
+    else
+      addContacts(a, b);
+  }
+  findBorderContacts(reuse);
+  contactsComplete_ = fromEmpty;
+  previousValid_ = false;  // used: the next detection compares against this one
+  statistics_.contacts = contacts.size();
+  for (const std::uint32_t index : customObjects_) objects[index].updateSensors(*this);
+}
+
+void Simulator::findBorderContacts(bool reuse) {
+  // Borders skip the broad phase: each meets every grid shape whose box reaches behind its
+  // line. Which shapes do is kept as one bit per grid shape and border, retested only for
+  // moved shapes; the pairs are visited in the same order either way (border, then shape).
+  const std::size_t count = gridShapes_.size();
+  const std::size_t words = (count + 63) / 64;
+  const bool remembered = restSkipping && reachShapes_ == count;
+  reachShapes_ = count;
+  borderReach_.resize(borderShapes_.size() * words);
+  for (std::size_t k = 0; k < borderShapes_.size(); ++k) {
+    const std::uint32_t border = borderShapes_[k];
+    const bool borderMoved = !remembered || shapeMoved_[border] != 0;
     const Vector2 point = geometry_[border].p0;
     const Vector2 normal = geometry_[border].p1;
-    for (std::size_t i = 0; i < gridShapes_.size(); ++i) {
-      // The box (margin included) lies entirely on the free side: no contact is possible.
-      const BoundingBox& box = gridBoxes_[i];
-      const Vector2 centre = (box.lower + box.upper) * real(0.5);
-      const Vector2 half = (box.upper - box.lower) * real(0.5);
-      const real reach = std::abs(normal.x) * half.x + std::abs(normal.y) * half.y;
-      if (dot(centre - point, normal) - reach > 0) continue;
-      addContacts(border, gridShapes_[i]);
+    for (std::size_t w = 0; w < words; ++w) {
+      const std::uint64_t retest = borderMoved ? wordMask(w, count) : gridMovedBits_[w];
+      std::uint64_t& reach = borderReach_[k * words + w];
+      reach &= ~retest;
+      for (std::uint64_t bits = retest; bits != 0; bits &= bits - 1) {
+        const std::size_t i = 64 * w + static_cast<std::size_t>(std::countr_zero(bits));
+        // Out of reach when the box (margin included) lies entirely on the free side.
+        const BoundingBox& box = gridBoxes_[i];
+        const Vector2 centre = (box.lower + box.upper) * real(0.5);
+        const Vector2 half = (box.upper - box.lower) * real(0.5);
+        const real extent = std::abs(normal.x) * half.x + std::abs(normal.y) * half.y;
+        if (dot(centre - point, normal) - extent <= 0) reach |= bits & (~bits + 1);
+      }
+      for (std::uint64_t bits = reach; bits != 0; bits &= bits - 1) {
+        const std::uint32_t shape =
+            gridShapes_[64 * w + static_cast<std::size_t>(std::countr_zero(bits))];
+        if (reuse && !borderMoved && shapeMoved_[shape] == 0)
+          reuseContacts(border, shape);
+        else
+          addContacts(border, shape);
+      }
     }
   }
-  statistics_.contacts = contacts.size();
-  for (PhysicalObject& object : objects) object.updateSensors(*this);
+}
+
+void Simulator::reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
+  // Neither shape moved and its filters did not change: the contacts are last detection's.
+  // (Pairs within one multi-body object are always tested: whether they collide is its call.)
+  if (shapes_[shapeB].type < shapes_[shapeA].type) std::swap(shapeA, shapeB);
+  if (shapes_[shapeA].body == shapes_[shapeB].body) {
+    addContacts(shapeA, shapeB);
+    return;
+  }
+  if (!previousIndexed_) indexPreviousContacts();
+  for (std::uint32_t k = previousStart_[shapeA]; k < previousStart_[shapeA + 1]; ++k) {
+    const GlobalContactInfo& previous = previousContacts_[previousOrder_[k]];
+    if (previous.shapeB != shapeB) continue;
+    contacts.items_.push_back(previous);
+    contacts.items_.back().force = 0;  // the solver's output, not detection's
+    ++statistics_.reusedContacts;
+  }
+}
+
+void Simulator::indexPreviousContacts() {
+  // Counting sort of the last detection's contacts by shape A (a pair's points stay in order).
+  previousStart_.assign(shapes_.size() + 1, 0);
+  for (const GlobalContactInfo& c : previousContacts_) ++previousStart_[c.shapeA + 1];
+  for (std::size_t s = 0; s < shapes_.size(); ++s) previousStart_[s + 1] += previousStart_[s];
+  previousOrder_.resize(previousContacts_.size());
+  for (std::uint32_t k = 0; k < previousContacts_.size(); ++k)
+    previousOrder_[previousStart_[previousContacts_[k].shapeA]++] = k;
+  // The fill advanced each start to the next shape's start: shift back.
+  for (std::size_t s = shapes_.size(); s > 0; --s) previousStart_[s] = previousStart_[s - 1];
+  previousStart_[0] = 0;
+  previousIndexed_ = true;
 }
 
 void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
   if (shapes_[shapeB].type < shapes_[shapeA].type) std::swap(shapeA, shapeB);
   const Shape& a = shapes_[shapeA];
   const Shape& b = shapes_[shapeB];
+  if (!a.movable && !b.movable) return;
+  if (a.group != 0 && a.group == b.group) return;
   if (a.body == b.body) {
     const MultiBodyObject* multi = multiBodies_[a.body];
     if (multi == nullptr || !multi->selfCollides(*a.primitive, *b.primitive)) return;
   }
-  PhysicalObject& bodyA = objects[a.body];
-  PhysicalObject& bodyB = objects[b.body];
-  if (!movable(a.body) && !movable(b.body)) return;
-  if (bodyA.collisionGroup != 0 && bodyA.collisionGroup == bodyB.collisionGroup) return;
   const ShapeGeometry& ga = geometry_[shapeA];
   const ShapeGeometry& gb = geometry_[shapeB];
   const real margin = a.type == ShapeType::HalfPlane ? gb.margin : std::min(ga.margin, gb.margin);
 
-  Manifold manifold;
+  const auto append = [&](const Manifold& manifold) {
+    for (int i = 0; i < manifold.count; ++i) {
+      const ManifoldPoint& p = manifold.points[i];
+      contacts.items_.push_back({a.object, b.object, a.primitive, b.primitive, a.body, b.body,
+                                 shapeA, shapeB, p.feature, p.point, manifold.normal, p.depth, 0});
+    }
+  };
   switch (a.type) {
     case ShapeType::HalfPlane:
-      manifold = b.type == ShapeType::Circle
-                     ? collideHalfPlaneCircle(ga.p0, ga.p1, gb.p0, gb.radius, margin)
-                     : collideHalfPlaneCapsule(ga.p0, ga.p1, gb.p0, gb.p1, gb.radius, margin);
+      append(b.type == ShapeType::Circle
+                 ? collideHalfPlaneCircle(ga.p0, ga.p1, gb.p0, gb.radius, margin)
+                 : collideHalfPlaneCapsule(ga.p0, ga.p1, gb.p0, gb.p1, gb.radius, margin));
       break;
     case ShapeType::Circle:
-      manifold = b.type == ShapeType::Circle
-                     ? collideCircles(ga.p0, ga.radius, gb.p0, gb.radius, margin)
-                     : collideCircleCapsule(ga.p0, ga.radius, gb.p0, gb.p1, gb.radius, margin);
+      if (b.type == ShapeType::Circle) {
+        // Most candidate pairs of a crowd are out of reach: a conservative test on squared
+        // distances (no square root, no call) drops them; the rest get the exact test.
+        const Vector2 d = gb.p0 - ga.p0;
+        const real reach = (ga.radius + gb.radius + margin) * (1 + 64 * realEpsilon);
+        if (d.lengthSquared() > reach * reach) return;
+        append(collideCircles(ga.p0, ga.radius, gb.p0, gb.radius, margin));
+      } else {
+        append(collideCircleCapsule(ga.p0, ga.radius, gb.p0, gb.p1, gb.radius, margin));
+      }
       break;
     case ShapeType::Capsule:
-      manifold = collideCapsules(ga.p0, ga.p1, ga.radius, gb.p0, gb.p1, gb.radius, margin);
+      append(collideCapsules(ga.p0, ga.p1, ga.radius, gb.p0, gb.p1, gb.radius, margin));
       break;
-  }
-  for (int i = 0; i < manifold.count; ++i) {
-    const ManifoldPoint& p = manifold.points[i];
-    GlobalContactInfo contact;
-    contact.objectA = &bodyA;
-    contact.objectB = &bodyB;
-    contact.primitiveA = a.primitive;
-    contact.primitiveB = b.primitive;
-    contact.bodyA = a.body;
-    contact.bodyB = b.body;
-    contact.shapeA = shapeA;
-    contact.shapeB = shapeB;
-    contact.feature = p.feature;
-    contact.point = p.point;
-    contact.normal = manifold.normal;
-    contact.depth = p.depth;
-    contacts.items_.push_back(contact);
   }
 }
 
 void Simulator::indexContacts() {
-  // Counting sort by object into one array; each object's `contacts` is its slice of it.
+  // Counting sort by object into one array; each object's `contacts` is its slice of it. Only
+  // objects with contacts are touched: the others' lists are empty already.
+  clearContactLists();
   const std::size_t objectCount = objects.size();
   objectContactStart_.assign(objectCount + 1, 0);
   for (const GlobalContactInfo& c : contacts.items_) {
@@ -156,11 +324,18 @@ void Simulator::indexContacts() {
   }
   // The fill advanced each start to the next object's start: walk back to slice.
   std::uint32_t begin = 0;
-  for (std::size_t i = 0; i < objectCount; ++i) {
+  for (std::uint32_t i = 0; i < objectCount; ++i) {
     const std::uint32_t end = objectContactStart_[i];
+    if (end == begin) continue;
     objects[i].contacts = std::span(objectContacts_).subspan(begin, end - begin);
+    listedObjects_.push_back(i);
     begin = end;
   }
+}
+
+void Simulator::clearContactLists() {
+  for (const std::uint32_t i : listedObjects_) objects[i].contacts = {};
+  listedObjects_.clear();
 }
 
 }  // namespace thyrix

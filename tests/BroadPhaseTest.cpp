@@ -248,6 +248,73 @@ TEST(BroadPhase, OutputIsDeterministic) {
   EXPECT_TRUE(equal(first, second));
 }
 
+bool samePairs(const std::vector<BoxPair>& x, const std::vector<BoxPair>& y) {
+  return std::equal(x.begin(), x.end(), y.begin(), y.end(), [](BoxPair p, BoxPair q) {
+    return p.first == q.first && p.second == q.second;
+  });
+}
+
+TEST(BroadPhase, DenseAndHashedGridsGiveTheSameOrder) {
+  // A pile-like crowded layout (dense grid) and scattered ones (either grid), with oversized
+  // boxes: the hashed grid, forced, must give the very same sequence of pairs.
+  BroadPhase dense;
+  BroadPhase hashed;
+  hashed.allowDenseGrid = false;
+  std::vector<BoxPair> densePairs;
+  std::vector<BoxPair> hashedPairs;
+  for (const double world : {3.0, 10.0, 40.0}) {
+    const std::vector<BoundingBox> boxes = randomBoxes(5, 1000, 3, world);
+    dense.findPairs(boxes, densePairs);
+    hashed.findPairs(boxes, hashedPairs);
+    SCOPED_TRACE(::testing::Message() << "world " << world);
+    expectSameAsBruteForce(boxes, densePairs);
+    EXPECT_TRUE(samePairs(densePairs, hashedPairs));
+  }
+  // Unit boxes in a square: the dense grid for sure.
+  std::vector<BoundingBox> square;
+  for (int j = 0; j < 30; ++j)
+    for (int i = 0; i < 30; ++i) square.push_back(box(i * 0.9, j * 0.9, i * 0.9 + 1, j * 0.9 + 1));
+  dense.findPairs(square, densePairs);
+  hashed.findPairs(square, hashedPairs);
+  expectSameAsBruteForce(square, densePairs);
+  EXPECT_TRUE(samePairs(densePairs, hashedPairs));
+}
+
+TEST(BroadPhase, FewBoxesRetestOnlyTheMovedOnes) {
+  // Up to smallCount boxes, a call told which boxes moved must give what a full test gives.
+  MTRandom random(3);
+  std::vector<BoundingBox> boxes = randomBoxes(11, 40, 2, 6);
+  std::vector<std::uint64_t> moved(1, 0);  // one bit per box
+  BroadPhase incremental;
+  BroadPhase full;
+  std::vector<BoxPair> incrementalPairs;
+  std::vector<BoxPair> fullPairs;
+  incremental.findPairs(boxes, moved, incrementalPairs);  // nothing remembered yet: all tested
+  full.findPairs(boxes, fullPairs);
+  EXPECT_TRUE(samePairs(incrementalPairs, fullPairs));
+  for (int step = 0; step < 200; ++step) {
+    moved[0] = 0;
+    const int moving = 1 + static_cast<int>(random.integer(4));
+    for (int k = 0; k < moving; ++k) {
+      const std::uint32_t i = random.integer(static_cast<std::uint32_t>(boxes.size()));
+      const Vector2 shift = vec(random.uniform(-1, 1), random.uniform(-1, 1));
+      boxes[i] = {boxes[i].lower + shift, boxes[i].upper + shift};
+      moved[0] |= std::uint64_t{1} << i;
+    }
+    incremental.findPairs(boxes, moved, incrementalPairs);
+    full.findPairs(boxes, fullPairs);
+    SCOPED_TRACE(::testing::Message() << "step " << step);
+    ASSERT_TRUE(samePairs(incrementalPairs, fullPairs));
+    expectSameAsBruteForce(boxes, incrementalPairs);
+  }
+  // A different box count: the promise is not used (box 0 moved but is not flagged).
+  boxes.pop_back();
+  boxes[0] = {boxes[0].lower + vec(3, 3), boxes[0].upper + vec(3, 3)};
+  moved[0] = 0;
+  incremental.findPairs(boxes, moved, incrementalPairs);
+  expectSameAsBruteForce(boxes, incrementalPairs);
+}
+
 TEST(BroadPhase, WarmedUpCallsReuseTheirBuffers) {
   const std::vector<BoundingBox> large = randomBoxes(31, 1200, 3, 35);
   // A prefix: no more boxes, cells or pairs than the large input.
