@@ -23,7 +23,7 @@ namespace thyrix {
 struct StepStatistics {
   std::size_t contacts = 0;           ///< contact points detected
   std::size_t reusedContacts = 0;     ///< of which kept from the last step (rest skipping)
-  std::size_t islands = 0;            ///< islands with at least one contact
+  std::size_t islands = 0;            ///< islands built (none when no contact needed a force)
   std::size_t solvedIslands = 0;      ///< islands whose contacts needed forces
   std::size_t gaussSeidelSweeps = 0;  ///< sweeps summed over the islands Gauss-Seidel solved
   std::size_t baraffPivots = 0;       ///< pivots summed over the islands Baraff solved

@@ -77,25 +77,35 @@ void Simulator::solveContacts() {
     rows_[contacts.size() + j] = {
         internalOwner_[j], internalOwner_[j], {}, 0, 0, internal_[j].target, 0};
 
-  islands_.build(rows_, movable_, touched_);
-  statistics_.islands = islands_.count();
-  for (std::size_t i = 0; i < islands_.count(); ++i) {
-    const auto island = islands_.island(i);
-    const bool general =
-        hasMultiBodies_ && std::any_of(island.begin(), island.end(), [this](std::uint32_t k) {
-          return multiBodies_[rows_[k].a] != nullptr || multiBodies_[rows_[k].b] != nullptr;
-        });
-    if (general)
-      solveGeneralIsland(island);
-    else
-      solveIsland(island);
-  }
-
-  for (const std::uint32_t i : touched_) {
-    PhysicalObject& object = objects[i];
-    if (object.fixed || multiBodies_[i] != nullptr) continue;
-    object.v = bodies_[i].v;
-    object.omega = bodies_[i].omega;
+  // In a sparse world most steps need no force at all: every contact (mostly speculative)
+  // holds by itself at the free velocities, so no island needs building and no velocity
+  // changes. Only rows between rigid bodies can be judged so (a multi-body row's velocity is
+  // its object's business).
+  const bool forceFree =
+      !hasMultiBodies_ &&
+      std::all_of(rows_.begin(), rows_.end(), [this](const ContactConstraint& row) {
+        return row.normalVelocity(bodies_[row.a], bodies_[row.b]) >= row.target;
+      });
+  if (!forceFree) {
+    islands_.build(rows_, movable_, touched_);
+    statistics_.islands = islands_.count();
+    for (std::size_t i = 0; i < islands_.count(); ++i) {
+      const auto island = islands_.island(i);
+      const bool general =
+          hasMultiBodies_ && std::any_of(island.begin(), island.end(), [this](std::uint32_t k) {
+            return multiBodies_[rows_[k].a] != nullptr || multiBodies_[rows_[k].b] != nullptr;
+          });
+      if (general)
+        solveGeneralIsland(island);
+      else
+        solveIsland(island);
+    }
+    for (const std::uint32_t i : touched_) {
+      PhysicalObject& object = objects[i];
+      if (object.fixed || multiBodies_[i] != nullptr) continue;
+      object.v = bodies_[i].v;
+      object.omega = bodies_[i].omega;
+    }
   }
   lastForces_.reset(contacts.size());
   for (std::size_t k = 0; k < contacts.size(); ++k) {
