@@ -79,6 +79,7 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
 
 void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) noexcept {
   BodyState state;
+  state.object = &object;
   state.firstShape = static_cast<std::uint32_t>(shapes_.size());
   state.shapeCount = static_cast<std::uint32_t>(object.primitives().size());
   state.standalone = state.shapeCount == 1 && object.primitives()[0] == &object;

@@ -141,6 +141,7 @@ class Simulator : public World {
   /// What detection remembers of a body, to notice that it moved or changed its filters.
   struct BodyState {
     static constexpr std::uint32_t unknown = 2;  // `fixed` before the body's first detection
+    PhysicalObject* object = nullptr;            // the body
     Vector2 r;
     real alpha = 0;
     std::uint32_t group = 0;        // collisionGroup

@@ -106,9 +106,13 @@ void Simulator::updateGeometry() {
   geometryFraction_ = settings_.speculativeFraction;
   sensingPrimitives_.clear();
   gridMovedBits_.assign((gridShapes_.size() + 63) / 64, 0);
-  for (std::uint32_t index = 0; index < objects.size(); ++index) {
-    PhysicalObject& body = objects[index];
-    BodyState& state = bodyStates_[index];
+  // Local views: a store to the byte array shapeMoved_ may alias anything, which would make
+  // the compiler reload every member's buffer at each body.
+  const std::span<BodyState> states(bodyStates_);
+  std::uint8_t* const shapeMoved = shapeMoved_.data();
+  for (std::uint32_t index = 0; index < states.size(); ++index) {
+    BodyState& state = states[index];
+    PhysicalObject& body = *state.object;
     // A body is unchanged if its pose and its collision filters are: its rigid parts are then
     // where they were (followOwner would put them there again), unless moved by hand, which
     // the parts' own poses show; so do parts placed by their owner (articulated links). Every
@@ -134,7 +138,7 @@ void Simulator::updateGeometry() {
       const std::uint32_t s = state.firstShape;
       auto& primitive = static_cast<Primitive&>(body);  // the body is its one primitive
       if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
-      shapeMoved_[s] = changed ? 1 : 0;
+      shapeMoved[s] = changed ? 1 : 0;
       if (!changed) continue;
       updateShape(s, known);
       updateBodyBox(index);
@@ -148,7 +152,7 @@ void Simulator::updateGeometry() {
       const ShapePose& pose = shapePoses_[s];
       const bool moved =
           changed || !sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha);
-      shapeMoved_[s] = moved ? 1 : 0;
+      shapeMoved[s] = moved ? 1 : 0;
       if (!moved) continue;
       primitive.followOwner();
       updateShape(s, known);
