@@ -7,9 +7,12 @@
 #include <ThyrixLite/ThyrixParameters.h>
 #include <ThyrixLite/Vector2.h>
 
+#include <bit>
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace thyrix {
@@ -56,7 +59,9 @@ class PhysicalObject : public GraphicalObject {
   /// Phase 5 of a step: velocities from the accumulated external force and torque alone,
   /// `v = F / m`, `omega = torque / I`; the accumulators are then reset to zero.
   virtual void computeDerivativesWithoutContacts() {
-    if (fixed) {
+    if (fixed || (unpushed() && m > 0 && I > 0)) {
+      // Unpushed (most bodies at rest): +0 divided by a positive mass is +0, so the three
+      // divisions are skipped with the same result, bit for bit.
       v = {};
       omega = 0;
     } else {
@@ -134,6 +139,13 @@ class PhysicalObject : public GraphicalObject {
   virtual void onRegistered(Simulator& simulator) noexcept;
 
  private:
+  /// True when the force and torque accumulators are exactly +0 (not -0, not NaN).
+  [[nodiscard]] bool unpushed() const {
+    using Bits = std::conditional_t<sizeof(real) == 8, std::uint64_t, std::uint32_t>;
+    return (std::bit_cast<Bits>(externalForce.x) | std::bit_cast<Bits>(externalForce.y) |
+            std::bit_cast<Bits>(externalTorque)) == 0;
+  }
+
   friend class World;
   friend class Simulator;
   std::vector<Primitive*> primitives_;

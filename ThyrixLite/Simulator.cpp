@@ -57,7 +57,7 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
   reserveFor(touched_, objects.size() + added.size());
   reserveFor(touchedStamp_, objects.size() + added.size());
   reserveFor(multiBodies_, objects.size() + added.size());
-  reserveFor(objectContactStart_, objects.size() + added.size() + 1);
+  reserveFor(objectContactCursor_, objects.size() + added.size());
   // Rest skipping's memory of the shapes and bodies.
   std::size_t borders = borderShapes_.size();
   for (const PhysicalObject* object : added)
@@ -79,10 +79,11 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
 
 void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) noexcept {
   BodyState state;
+  state.object = &object;
   state.firstShape = static_cast<std::uint32_t>(shapes_.size());
   state.shapeCount = static_cast<std::uint32_t>(object.primitives().size());
   state.standalone = state.shapeCount == 1 && object.primitives()[0] == &object;
-  bodyStates_.push_back(state);  // not `known`: its first detection computes everything
+  bodyStates_.push_back(state);  // unknown: its first detection computes everything
   for (Primitive* primitive : object.primitives()) {
     const auto shape = static_cast<std::uint32_t>(shapes_.size());
     shapes_.push_back(
@@ -104,6 +105,7 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
   bodies_.push_back({});
   movable_.push_back(0);
   touchedStamp_.push_back(0);
+  objectContactCursor_.push_back(0);
   multiBodies_.push_back(dynamic_cast<MultiBodyObject*>(&object));
   hasMultiBodies_ = hasMultiBodies_ || multiBodies_.back() != nullptr;
   object.onRegistered(*this);

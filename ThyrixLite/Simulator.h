@@ -140,14 +140,15 @@ class Simulator : public World {
 
   /// What detection remembers of a body, to notice that it moved or changed its filters.
   struct BodyState {
+    static constexpr std::uint32_t unknown = 2;  // `fixed` before the body's first detection
+    PhysicalObject* object = nullptr;            // the body
     Vector2 r;
     real alpha = 0;
-    std::uint32_t group = 0;       // collisionGroup
-    std::uint32_t firstShape = 0;  // its shapes are firstShape, firstShape + 1, ...
+    std::uint32_t group = 0;        // collisionGroup
+    std::uint32_t fixed = unknown;  // 1 if fixed, else 0
+    std::uint32_t firstShape = 0;   // its shapes are firstShape, firstShape + 1, ...
     std::uint32_t shapeCount = 0;
-    bool fixed = false;
     bool movable = false;
-    bool known = false;       // false until its first detection
     bool standalone = false;  // the body is its one primitive
   };
   /// The pose of a primitive its geometry was computed from, and its capsule half axis.
@@ -208,15 +209,14 @@ class Simulator : public World {
   bool contactsComplete_ = false;  // `contacts` holds exactly one detection's contacts
   bool previousValid_ = false;     // previousContacts_ is the last detection's, complete
   bool previousIndexed_ = false;   // previousStart_ and previousOrder_ are up to date
-  std::size_t unmovedShapes_ = 0;  // this detection
   // Per object: 1 when it keeps PhysicalObject's step hooks (called without virtual calls);
   // the others, in registration order.
   std::vector<std::uint8_t> defaultHooks_;
   std::vector<std::uint32_t> customObjects_;
 
-  std::vector<ContactInfo> objectContacts_;        // every object's contacts, object by object
-  std::vector<std::uint32_t> objectContactStart_;  // where each object's contacts begin
-  std::vector<std::uint32_t> listedObjects_;       // objects whose `contacts` is not empty
+  std::vector<ContactInfo> objectContacts_;         // every object's contacts, object by object
+  std::vector<std::uint32_t> objectContactCursor_;  // per object, 0 outside indexContacts
+  std::vector<std::uint32_t> listedObjects_;        // objects whose `contacts` is not empty
 
   std::vector<SolverBody> bodies_;  // valid for the bodies in touched_ only
   std::vector<std::uint8_t> movable_;

@@ -15,10 +15,11 @@ namespace {
 
 /// Bitwise equality: a pose is unchanged only if its bits are (so -0 differs from +0, and a
 /// NaN equals itself), which is what makes reusing results exact.
-bool sameBits(real a, real b) {
+std::uint64_t bitsOf(real a) {
   using Bits = std::conditional_t<sizeof(real) == 8, std::uint64_t, std::uint32_t>;
-  return std::bit_cast<Bits>(a) == std::bit_cast<Bits>(b);
+  return std::bit_cast<Bits>(a);
 }
+bool sameBits(real a, real b) { return bitsOf(a) == bitsOf(b); }
 bool sameBits(Vector2 a, Vector2 b) { return sameBits(a.x, b.x) && sameBits(a.y, b.y); }
 
 /// Bits 0 to count - 1 of word @p word of a bit set of @p count bits.
@@ -104,25 +105,30 @@ void Simulator::updateGeometry() {
       !restSkipping || !sameBits(settings_.speculativeFraction, geometryFraction_);
   geometryFraction_ = settings_.speculativeFraction;
   sensingPrimitives_.clear();
-  unmovedShapes_ = 0;
   gridMovedBits_.assign((gridShapes_.size() + 63) / 64, 0);
-  for (std::uint32_t index = 0; index < objects.size(); ++index) {
-    PhysicalObject& body = objects[index];
-    BodyState& state = bodyStates_[index];
+  // Local views: a store to the byte array shapeMoved_ may alias anything, which would make
+  // the compiler reload every member's buffer at each body.
+  const std::span<BodyState> states(bodyStates_);
+  std::uint8_t* const shapeMoved = shapeMoved_.data();
+  for (std::uint32_t index = 0; index < states.size(); ++index) {
+    BodyState& state = states[index];
+    PhysicalObject& body = *state.object;
     // A body is unchanged if its pose and its collision filters are: its rigid parts are then
     // where they were (followOwner would put them there again), unless moved by hand, which
-    // the parts' own poses show; so do parts placed by their owner (articulated links).
-    const bool changed = everything || !state.known || !sameBits(body.r, state.r) ||
-                         !sameBits(body.alpha, state.alpha) || body.fixed != state.fixed ||
-                         body.collisionGroup != state.group;
-    const bool known = state.known;
+    // the parts' own poses show; so do parts placed by their owner (articulated links). Every
+    // field is compared at once, by its bits (`fixed` never matches before the first detection).
+    const std::uint64_t difference =
+        (bitsOf(body.r.x) ^ bitsOf(state.r.x)) | (bitsOf(body.r.y) ^ bitsOf(state.r.y)) |
+        (bitsOf(body.alpha) ^ bitsOf(state.alpha)) | (body.collisionGroup ^ state.group) |
+        (std::uint32_t{body.fixed} ^ state.fixed);
+    const bool changed = everything || difference != 0;
+    const bool known = state.fixed != BodyState::unknown;
     if (changed) {
       state.r = body.r;
       state.alpha = body.alpha;
-      state.fixed = body.fixed;
+      state.fixed = body.fixed ? 1 : 0;
       state.group = body.collisionGroup;
       state.movable = movable(index);
-      state.known = true;
       for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
         shapes_[s].group = state.group;  // the filters, next to the shapes for the narrow phase
         shapes_[s].movable = state.movable;
@@ -130,13 +136,10 @@ void Simulator::updateGeometry() {
     }
     if (state.standalone) {  // a primitive of its own: its pose is the body's (common case)
       const std::uint32_t s = state.firstShape;
-      Primitive& primitive = *shapes_[s].primitive;
+      auto& primitive = static_cast<Primitive&>(body);  // the body is its one primitive
       if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
-      shapeMoved_[s] = changed ? 1 : 0;
-      if (!changed) {
-        ++unmovedShapes_;
-        continue;
-      }
+      shapeMoved[s] = changed ? 1 : 0;
+      if (!changed) continue;
       updateShape(s, known);
       updateBodyBox(index);
       continue;
@@ -149,11 +152,8 @@ void Simulator::updateGeometry() {
       const ShapePose& pose = shapePoses_[s];
       const bool moved =
           changed || !sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha);
-      shapeMoved_[s] = moved ? 1 : 0;
-      if (!moved) {
-        ++unmovedShapes_;
-        continue;
-      }
+      shapeMoved[s] = moved ? 1 : 0;
+      if (!moved) continue;
       primitive.followOwner();
       updateShape(s, known);
       anyMoved = true;
@@ -167,7 +167,8 @@ void Simulator::detectContacts() {
   const bool fromEmpty = contacts.empty();
   updateGeometry();
   // Reuse needs the last detection's complete list (eraseContacts kept it aside).
-  const bool reuse = restSkipping && previousValid_ && fromEmpty && unmovedShapes_ > 0;
+  // (Only pairs of unmoved shapes are reused: none when every shape moved.)
+  const bool reuse = restSkipping && previousValid_ && fromEmpty;
   previousIndexed_ = false;
   statistics_.reusedContacts = 0;
   broadPhase_.findPairs(gridBoxes_, gridMovedBits_, pairs_);
@@ -304,31 +305,38 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
 
 void Simulator::indexContacts() {
   // Counting sort by object into one array; each object's `contacts` is its slice of it. Only
-  // objects with contacts are touched: the others' lists are empty already.
+  // the objects with contacts are visited (listed in order of their first contact), so a
+  // world of many objects with few contacts pays for its contacts, not for its size.
   clearContactLists();
-  const std::size_t objectCount = objects.size();
-  objectContactStart_.assign(objectCount + 1, 0);
-  for (const GlobalContactInfo& c : contacts.items_) {
-    ++objectContactStart_[c.bodyA + 1];
-    ++objectContactStart_[c.bodyB + 1];
-  }
-  for (std::size_t i = 0; i < objectCount; ++i)
-    objectContactStart_[i + 1] += objectContactStart_[i];
   objectContacts_.resize(2 * contacts.size());
+  // objectContactCursor_ is zero for every object between calls: count, listing each object
+  // at its first contact.
+  const auto count = [this](std::uint32_t body) {
+    if (objectContactCursor_[body]++ == 0) listedObjects_.push_back(body);
+  };
+  for (const GlobalContactInfo& c : contacts.items_) {
+    count(c.bodyA);
+    count(c.bodyB);
+  }
+  std::uint32_t offset = 0;
+  for (const std::uint32_t i : listedObjects_) {
+    const std::uint32_t n = objectContactCursor_[i];
+    objectContactCursor_[i] = offset;
+    offset += n;
+  }
   for (std::uint32_t k = 0; k < contacts.size(); ++k) {
     const GlobalContactInfo& c = contacts.items_[k];
-    objectContacts_[objectContactStart_[c.bodyA]++] =
+    objectContacts_[objectContactCursor_[c.bodyA]++] =
         ContactInfo{k, c.objectB, c.primitiveA, c.primitiveB, c.point, -c.normal, c.depth, 0};
-    objectContacts_[objectContactStart_[c.bodyB]++] =
+    objectContacts_[objectContactCursor_[c.bodyB]++] =
         ContactInfo{k, c.objectA, c.primitiveB, c.primitiveA, c.point, c.normal, c.depth, 0};
   }
-  // The fill advanced each start to the next object's start: walk back to slice.
+  // Each cursor ended where the next listed object's slice begins: slice, and zero it again.
   std::uint32_t begin = 0;
-  for (std::uint32_t i = 0; i < objectCount; ++i) {
-    const std::uint32_t end = objectContactStart_[i];
-    if (end == begin) continue;
+  for (const std::uint32_t i : listedObjects_) {
+    const std::uint32_t end = objectContactCursor_[i];
     objects[i].contacts = std::span(objectContacts_).subspan(begin, end - begin);
-    listedObjects_.push_back(i);
+    objectContactCursor_[i] = 0;
     begin = end;
   }
 }
