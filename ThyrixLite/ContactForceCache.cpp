@@ -26,6 +26,7 @@ void ContactForceCache::reset(std::size_t count) {
   keys_.assign(capacity, empty);
   forces_.resize(capacity);
   mask_ = capacity - 1;
+  entries_ = 0;
 }
 
 void ContactForceCache::insert(std::uint64_t key, real force) {
@@ -33,6 +34,7 @@ void ContactForceCache::insert(std::uint64_t key, real force) {
   while (keys_[i] != empty) i = (i + 1) & mask_;
   keys_[i] = key;
   forces_[i] = force;
+  ++entries_;
 }
 
 real ContactForceCache::find(std::uint64_t key) const {

@@ -25,6 +25,10 @@ class ContactForceCache {
   void reserve(std::size_t count);
   /// Empties the table and sizes it for @p count entries.
   void reset(std::size_t count);
+  /// Empties the table (nothing to do when it is already empty).
+  void clear() {
+    if (entries_ > 0) reset(0);
+  }
   /// Stores @p force under @p key (keys are unique within a step).
   void insert(std::uint64_t key, real force);
   /// The force stored under @p key, or 0.
@@ -37,6 +41,7 @@ class ContactForceCache {
   std::vector<std::uint64_t> keys_;
   std::vector<real> forces_;
   std::size_t mask_ = 0;
+  std::size_t entries_ = 0;
 };
 
 }  // namespace thyrix

@@ -24,7 +24,7 @@ void Simulator::solveContacts() {
     }
   }
   if (contacts.empty() && internal_.empty()) {
-    lastForces_.reset(0);
+    lastForces_.clear();
     updateTactileSensors();
     return;
   }
@@ -86,26 +86,29 @@ void Simulator::solveContacts() {
       std::all_of(rows_.begin(), rows_.end(), [this](const ContactConstraint& row) {
         return row.normalVelocity(bodies_[row.a], bodies_[row.b]) >= row.target;
       });
-  if (!forceFree) {
-    islands_.build(rows_, movable_, touched_);
-    statistics_.islands = islands_.count();
-    for (std::size_t i = 0; i < islands_.count(); ++i) {
-      const auto island = islands_.island(i);
-      const bool general =
-          hasMultiBodies_ && std::any_of(island.begin(), island.end(), [this](std::uint32_t k) {
-            return multiBodies_[rows_[k].a] != nullptr || multiBodies_[rows_[k].b] != nullptr;
-          });
-      if (general)
-        solveGeneralIsland(island);
-      else
-        solveIsland(island);
-    }
-    for (const std::uint32_t i : touched_) {
-      PhysicalObject& object = objects[i];
-      if (object.fixed || multiBodies_[i] != nullptr) continue;
-      object.v = bodies_[i].v;
-      object.omega = bodies_[i].omega;
-    }
+  if (forceFree) {  // no force: contacts and object contact lists already say 0
+    lastForces_.clear();
+    updateTactileSensors();
+    return;
+  }
+  islands_.build(rows_, movable_, touched_);
+  statistics_.islands = islands_.count();
+  for (std::size_t i = 0; i < islands_.count(); ++i) {
+    const auto island = islands_.island(i);
+    const bool general =
+        hasMultiBodies_ && std::any_of(island.begin(), island.end(), [this](std::uint32_t k) {
+          return multiBodies_[rows_[k].a] != nullptr || multiBodies_[rows_[k].b] != nullptr;
+        });
+    if (general)
+      solveGeneralIsland(island);
+    else
+      solveIsland(island);
+  }
+  for (const std::uint32_t i : touched_) {
+    PhysicalObject& object = objects[i];
+    if (object.fixed || multiBodies_[i] != nullptr) continue;
+    object.v = bodies_[i].v;
+    object.omega = bodies_[i].omega;
   }
   lastForces_.reset(contacts.size());
   for (std::size_t k = 0; k < contacts.size(); ++k) {
