@@ -29,28 +29,6 @@ void Simulator::solveContacts() {
     return;
   }
 
-  // Only the bodies that rows touch take part (the others keep their velocities): a world of
-  // many bodies with few contacts pays for its contacts, not for its size.
-  ++stamp_;
-  touched_.clear();
-  const auto touch = [this](std::uint32_t i) {
-    if (touchedStamp_[i] == stamp_) return;
-    touchedStamp_[i] = stamp_;
-    touched_.push_back(i);
-    const PhysicalObject& object = objects[i];
-    // A multi-body object answers for itself (general islands): zero here, so the rigid
-    // formulas ignore its sides.
-    bodies_[i] =
-        multiBodies_[i] != nullptr
-            ? SolverBody{}
-            : SolverBody{object.v, object.omega, object.inverseMass(), object.inverseInertia()};
-    movable_[i] = movable(i) ? 1 : 0;
-  };
-  for (const GlobalContactInfo& c : contacts.items_) {
-    touch(c.bodyA);
-    touch(c.bodyB);
-  }
-  for (const std::uint32_t owner : internalOwner_) touch(owner);
   const real correction = settings_.penetrationCorrection;
   rows_.resize(contacts.size() + internal_.size());
   for (std::size_t k = 0; k < contacts.size(); ++k) {
@@ -84,13 +62,38 @@ void Simulator::solveContacts() {
   const bool forceFree =
       !hasMultiBodies_ &&
       std::all_of(rows_.begin(), rows_.end(), [this](const ContactConstraint& row) {
-        return row.normalVelocity(bodies_[row.a], bodies_[row.b]) >= row.target;
+        const PhysicalObject& a = objects[row.a];
+        const PhysicalObject& b = objects[row.b];
+        return row.normalVelocity({a.v, a.omega}, {b.v, b.omega}) >= row.target;
       });
   if (forceFree) {  // no force: contacts and object contact lists already say 0
     lastForces_.clear();
     updateTactileSensors();
     return;
   }
+
+  // Only the bodies that rows touch take part (the others keep their velocities): a world of
+  // many bodies with few contacts pays for its contacts, not for its size.
+  ++stamp_;
+  touched_.clear();
+  const auto touch = [this](std::uint32_t i) {
+    if (touchedStamp_[i] == stamp_) return;
+    touchedStamp_[i] = stamp_;
+    touched_.push_back(i);
+    const PhysicalObject& object = objects[i];
+    // A multi-body object answers for itself (general islands): zero here, so the rigid
+    // formulas ignore its sides.
+    bodies_[i] =
+        multiBodies_[i] != nullptr
+            ? SolverBody{}
+            : SolverBody{object.v, object.omega, object.inverseMass(), object.inverseInertia()};
+    movable_[i] = movable(i) ? 1 : 0;
+  };
+  for (const GlobalContactInfo& c : contacts.items_) {
+    touch(c.bodyA);
+    touch(c.bodyB);
+  }
+  for (const std::uint32_t owner : internalOwner_) touch(owner);
   islands_.build(rows_, movable_, touched_);
   statistics_.islands = islands_.count();
   for (std::size_t i = 0; i < islands_.count(); ++i) {
