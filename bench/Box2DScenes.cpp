@@ -111,7 +111,7 @@ Box2DArena::Box2DArena(const ArenaLayout& layout)
 }
 
 void Box2DArena::step() {
-  const Point direction = arenaPushDirection(layout_, steps_++);
+  const Point direction = push_.next();
   const b2Vec2 force = single(layout_.pushForce) * vec(direction);
   for (b2Body* body : agent_) body->ApplyForceToCenter(force, true);
   stepWorld();

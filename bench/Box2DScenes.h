@@ -64,7 +64,7 @@ class Box2DArena : public Box2DScene {
  private:
   ArenaLayout layout_;
   b2Body* agent_[2] = {nullptr, nullptr};
-  long steps_ = 0;
+  ArenaPush push_{layout_};
 };
 
 /// pileN in Box2D.

@@ -132,7 +132,7 @@ ChipmunkArena::ChipmunkArena(const ArenaLayout& layout)
 }
 
 void ChipmunkArena::step() {
-  const Point direction = arenaPushDirection(layout_, steps_++);
+  const Point direction = push_.next();
   const cpVect force = cpvmult(vec(direction), layout_.pushForce);
   for (cpBody* body : agent_) cpBodySetForce(body, force);
   stepSpace();

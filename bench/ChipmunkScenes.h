@@ -61,7 +61,7 @@ class ChipmunkArena : public ChipmunkScene {
  private:
   ArenaLayout layout_;
   cpBody* agent_[2] = {nullptr, nullptr};
-  long steps_ = 0;
+  ArenaPush push_{layout_};
 };
 
 /// pileN in Chipmunk.

@@ -38,7 +38,7 @@ ThyrixArena::ThyrixArena(const ArenaLayout& layout, ContactSolverKind solver)
 }
 
 void ThyrixArena::step() {
-  const Point direction = arenaPushDirection(layout_, steps_++);
+  const Point direction = push_.next();
   const Vector2 force = vector(direction) * static_cast<real>(layout_.pushForce);
   for (Circle* circle : agent_) circle->externalForce += force;
   simulator_.advanceTime();

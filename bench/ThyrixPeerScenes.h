@@ -35,7 +35,7 @@ class ThyrixArena {
   ArenaLayout layout_;
   Simulator simulator_;
   Circle* agent_[2] = {nullptr, nullptr};
-  long steps_ = 0;
+  ArenaPush push_{layout_};
 };
 
 /// pileN in Thyrix: borders for the open box, circles of quasistatic mass thyrixMass pushed
