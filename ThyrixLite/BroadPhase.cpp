@@ -50,7 +50,35 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const s
     return;
   }
   rememberedCount_ = 0;
+  reserveFor(count);
+  if (allowSweep && findPairsBySweep(boxes, pairs)) return;
   findPairsInGrid(boxes, pairs);
+}
+
+bool BroadPhase::findPairsBySweep(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
+  // How many boxes each box would be tested against along each axis, if the boxes were spread
+  // evenly over the span of their centres: the mean extent over the span, times the count.
+  Vector2 extents;
+  Vector2 low{realMax, realMax};
+  Vector2 high{-realMax, -realMax};
+  for (const BoundingBox& box : boxes) {
+    extents += box.upper - box.lower;
+    const Vector2 centre = (box.lower + box.upper) * real(0.5);
+    low = {std::min(low.x, centre.x), std::min(low.y, centre.y)};
+    high = {std::max(high.x, centre.x), std::max(high.y, centre.y)};
+  }
+  // (count x mean extent = the sum of extents; the span includes one mean extent, so that
+  // boxes on top of each other give the count, not a division by zero.)
+  const auto count = static_cast<real>(boxes.size());
+  const real testsX = extents.x / (high.x - low.x + extents.x / count);
+  const real testsY = extents.y / (high.y - low.y + extents.y / count);
+  const int axis = testsY < testsX ? 1 : 0;
+  // NaN (a NaN box) fails the test: the grid then decides.
+  if (!(std::min(testsX, testsY) <= sweepTestsPerBox)) return false;
+  // An even spread is only an estimate (clusters far apart look spread): past a few times the
+  // expected number of tests the sweep gives up, and the grid does the job.
+  const std::size_t maxTests = static_cast<std::size_t>(3 * sweepTestsPerBox) * boxes.size();
+  return sweep_.findPairs(boxes, axis, maxTests, pairs);
 }
 
 namespace {
@@ -120,12 +148,12 @@ void BroadPhase::reserveFor(std::uint32_t count) {
   for (auto* buffer : {&cellOfBox_, &sortedBoxes_, &oversized_}) buffer->reserve(count);
   cellX_.reserve(count);
   cellY_.reserve(count);
+  sweep_.reserve(count);
   reservedCount_ = count;
 }
 
 void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
   const auto count = static_cast<std::uint32_t>(boxes.size());
-  reserveFor(count);
   // Cells as small as the largest box allows (about one box per cell for similar sizes), but
   // no larger than twice the mean: rare big boxes are handled as oversized instead.
   real meanExtent = 0;

@@ -1,0 +1,92 @@
+#include <ThyrixLite/SweepAndPrune.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace thyrix {
+namespace {
+
+/// Any corner coordinate NaN: the box overlaps nothing.
+bool hasNaN(const BoundingBox& box) {
+  return std::isnan(box.lower.x) || std::isnan(box.lower.y) || std::isnan(box.upper.x) ||
+         std::isnan(box.upper.y);
+}
+
+}  // namespace
+
+void SweepAndPrune::reserve(std::uint32_t count) { entries_.reserve(count); }
+
+bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, int axis, std::size_t maxTests,
+                              std::vector<BoxPair>& pairs) {
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  const auto entryOf = [axis](const BoundingBox& box, std::uint32_t index) {
+    return axis == 0 ? Entry{box.lower.x, box.upper.x, box.lower.y, box.upper.y, index}
+                     : Entry{box.lower.y, box.upper.y, box.lower.x, box.upper.x, index};
+  };
+  // The last call's order is a good start when it held the same boxes along the same axis
+  // (every index once: no box was left out for a NaN); otherwise start from index order.
+  const bool keepOrder = axis == axis_ && count == count_ && entries_.size() == count;
+  std::size_t kept = 0;
+  if (keepOrder) {
+    for (const Entry& e : entries_) {
+      const BoundingBox& box = boxes[e.index];
+      if (!hasNaN(box)) entries_[kept++] = entryOf(box, e.index);
+    }
+  } else {
+    entries_.resize(count);
+    for (std::uint32_t i = 0; i < count; ++i)
+      if (!hasNaN(boxes[i])) entries_[kept++] = entryOf(boxes[i], i);
+  }
+  entries_.resize(kept);
+  axis_ = axis;
+  count_ = count;
+  sort();
+
+  // Each box against the boxes after it that start before it ends on the axis; the first that
+  // starts beyond ends the scan (all later ones start later still). The scan's condition is
+  // one side of the overlap on the axis; the other side is tested, as are both on the other
+  // axis, so the pairs are exactly those BoundingBox::overlaps() accepts.
+  const std::size_t start = pairs.size();
+  const std::size_t n = entries_.size();
+  std::size_t tests = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Entry p = entries_[k];
+    std::size_t m = k + 1;
+    for (; m < n && entries_[m].lower <= p.upper; ++m) {
+      const Entry& q = entries_[m];
+      if (p.lower <= q.upper && p.crossLower <= q.crossUpper && q.crossLower <= p.crossUpper)
+        pairs.push_back({std::min(p.index, q.index), std::max(p.index, q.index)});
+    }
+    tests += m - k - 1;
+    if (tests > maxTests) {
+      pairs.resize(start);
+      return false;
+    }
+  }
+  return true;
+}
+
+void SweepAndPrune::sort() {
+  const auto before = [](const Entry& a, const Entry& b) {
+    return a.lower < b.lower || (a.lower == b.lower && a.index < b.index);
+  };
+  // Insertion sort from the last order: a few swaps when the boxes moved a little. Past a
+  // budget of moves (the order changed a lot), a full sort finishes the job in n log n.
+  const std::size_t n = entries_.size();
+  std::size_t budget = 4 * n + 64;
+  for (std::size_t k = 1; k < n; ++k) {
+    if (!before(entries_[k], entries_[k - 1])) continue;
+    const Entry e = entries_[k];
+    std::size_t m = k;
+    for (; m > 0 && before(e, entries_[m - 1]); --m) entries_[m] = entries_[m - 1];
+    entries_[m] = e;
+    const std::size_t moved = k - m;
+    if (moved > budget) {
+      std::sort(entries_.begin(), entries_.end(), before);
+      return;
+    }
+    budget -= moved;
+  }
+}
+
+}  // namespace thyrix
