@@ -264,8 +264,12 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
   if (!a.movable && !b.movable) return;
   if (a.group != 0 && a.group == b.group) return;
   if (a.body == b.body) {
+    // Two primitives of one multi-body object touch unless its filter says otherwise (its
+    // neighbouring links never do): a table lookup, by their indices among its primitives.
     const MultiBodyObject* multi = multiBodies_[a.body];
-    if (multi == nullptr || !multi->selfCollides(*a.primitive, *b.primitive)) return;
+    const std::uint32_t first = bodyStates_[a.body].firstShape;
+    if (multi == nullptr || !multi->selfCollision().mayTouch(shapeA - first, shapeB - first))
+      return;
   }
   const ShapeGeometry& ga = geometry_[shapeA];
   const ShapeGeometry& gb = geometry_[shapeB];
