@@ -57,21 +57,25 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const s
 
 bool BroadPhase::findPairsBySweep(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
   // How many boxes each box would be tested against along each axis, if the boxes were spread
-  // evenly over the span of their centres: the mean extent over the span, times the count.
-  Vector2 extents;
-  Vector2 low{realMax, realMax};
-  Vector2 high{-realMax, -realMax};
+  // evenly over the span they cover on it: the count times the mean extent over the span. (The
+  // span includes the extents: boxes on top of each other give the count, not a division by
+  // zero.)
+  real extentX = 0;
+  real extentY = 0;
+  real lowX = realMax;
+  real lowY = realMax;
+  real highX = -realMax;
+  real highY = -realMax;
   for (const BoundingBox& box : boxes) {
-    extents += box.upper - box.lower;
-    const Vector2 centre = (box.lower + box.upper) * real(0.5);
-    low = {std::min(low.x, centre.x), std::min(low.y, centre.y)};
-    high = {std::max(high.x, centre.x), std::max(high.y, centre.y)};
+    extentX += box.upper.x - box.lower.x;
+    extentY += box.upper.y - box.lower.y;
+    lowX = std::min(lowX, box.lower.x);
+    lowY = std::min(lowY, box.lower.y);
+    highX = std::max(highX, box.upper.x);
+    highY = std::max(highY, box.upper.y);
   }
-  // (count x mean extent = the sum of extents; the span includes one mean extent, so that
-  // boxes on top of each other give the count, not a division by zero.)
-  const auto count = static_cast<real>(boxes.size());
-  const real testsX = extents.x / (high.x - low.x + extents.x / count);
-  const real testsY = extents.y / (high.y - low.y + extents.y / count);
+  const real testsX = extentX / (highX - lowX);
+  const real testsY = extentY / (highY - lowY);
   const int axis = testsY < testsX ? 1 : 0;
   // NaN (a NaN box) fails the test: the grid then decides.
   if (!(std::min(testsX, testsY) <= sweepTestsPerBox)) return false;

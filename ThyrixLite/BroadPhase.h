@@ -51,7 +51,7 @@ class BroadPhase {
   bool allowSweep = true;
 
   /// The sweep is chosen when the boxes' mean extent along an axis, times their count, over the
-  /// span of their centres on it (the expected number of boxes each must be tested against)
+  /// span they cover on it (the expected number of boxes each must be tested against)
   /// is at most this. A line of boxes end to end gives about 1, a filled square of n boxes
   /// about sqrt(n).
   static constexpr real sweepTestsPerBox = 4;
