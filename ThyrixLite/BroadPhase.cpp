@@ -76,9 +76,10 @@ bool BroadPhase::findPairsBySweep(std::span<const BoundingBox> boxes, std::vecto
   }
   const real testsX = extentX / (highX - lowX);
   const real testsY = extentY / (highY - lowY);
-  const int axis = testsY < testsX ? 1 : 0;
-  // NaN (a NaN box) fails the test: the grid then decides.
-  if (!(std::min(testsX, testsY) <= sweepTestsPerBox)) return false;
+  // Along x unless y looks better or x is NaN (an infinite extent, or a NaN box: then along y
+  // when that is a number); a NaN estimate fails the test and the grid decides.
+  const int axis = testsX <= testsY ? 0 : 1;
+  if (!((axis == 0 ? testsX : testsY) <= sweepTestsPerBox)) return false;
   // An even spread is only an estimate (clusters far apart look spread): past a few times the
   // expected number of tests the sweep gives up, and the grid does the job.
   const std::size_t maxTests = static_cast<std::size_t>(3 * sweepTestsPerBox) * boxes.size();

@@ -6,8 +6,12 @@
 namespace thyrix {
 namespace {
 
-/// Any corner coordinate NaN: the box overlaps nothing.
+/// Any corner coordinate NaN: the box overlaps nothing. The sum of the corners is NaN if one
+/// is (a test per box instead of four); only then, or when infinities of both signs meet,
+/// are they looked at one by one.
 bool hasNaN(const BoundingBox& box) {
+  if (!std::isnan(box.lower.x + box.lower.y + box.upper.x + box.upper.y)) [[likely]]
+    return false;
   return std::isnan(box.lower.x) || std::isnan(box.lower.y) || std::isnan(box.upper.x) ||
          std::isnan(box.upper.y);
 }

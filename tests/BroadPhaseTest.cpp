@@ -365,7 +365,7 @@ TEST(BroadPhase, SweepLeavesOutBoxesWithNaN) {
   std::vector<BoundingBox> boxes = chainBoxes(2, 200, 0.1, 0.125, 0.2);
   const real nan = std::numeric_limits<real>::quiet_NaN();
   boxes[10].lower.x = nan;
-  boxes[50].upper.y = nan;
+  boxes[50].upper.x = nan;  // (x only: the estimate along y stays a number, the sweep runs)
   std::vector<BoundingBox> away = boxes;
   away[10] = box(1e6, 1e6, 1e6, 1e6);
   away[50] = box(-1e6, 1e6, -1e6, 1e6);
@@ -375,6 +375,11 @@ TEST(BroadPhase, SweepLeavesOutBoxesWithNaN) {
   EXPECT_EQ(sortedPairs(pairs), bruteForce(away));
   boxes[10] = boxes[11];  // finite again: found again, whatever the last call left out
   away[10] = boxes[11];
+  broadPhase.findPairs(boxes, pairs);
+  EXPECT_EQ(sortedPairs(pairs), bruteForce(away));
+  // Infinite sides are numbers: a box across all x meets every box in its band of y.
+  const real inf = std::numeric_limits<real>::infinity();
+  boxes[100] = away[100] = {{-inf, boxes[100].lower.y}, {inf, boxes[100].upper.y}};
   broadPhase.findPairs(boxes, pairs);
   EXPECT_EQ(sortedPairs(pairs), bruteForce(away));
 }
