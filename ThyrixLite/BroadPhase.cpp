@@ -51,39 +51,8 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const s
   }
   rememberedCount_ = 0;
   reserveFor(count);
-  if (allowSweep && findPairsBySweep(boxes, pairs)) return;
+  if (allowSweep && sweep_.findPairs(boxes, sweepTestsPerBox, pairs)) return;
   findPairsInGrid(boxes, pairs);
-}
-
-bool BroadPhase::findPairsBySweep(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
-  // How many boxes each box would be tested against along each axis, if the boxes were spread
-  // evenly over the span they cover on it: the count times the mean extent over the span. (The
-  // span includes the extents: boxes on top of each other give the count, not a division by
-  // zero.)
-  real extentX = 0;
-  real extentY = 0;
-  real lowX = realMax;
-  real lowY = realMax;
-  real highX = -realMax;
-  real highY = -realMax;
-  for (const BoundingBox& box : boxes) {
-    extentX += box.upper.x - box.lower.x;
-    extentY += box.upper.y - box.lower.y;
-    lowX = std::min(lowX, box.lower.x);
-    lowY = std::min(lowY, box.lower.y);
-    highX = std::max(highX, box.upper.x);
-    highY = std::max(highY, box.upper.y);
-  }
-  const real testsX = extentX / (highX - lowX);
-  const real testsY = extentY / (highY - lowY);
-  // Along x unless y looks better or x is NaN (an infinite extent, or a NaN box: then along y
-  // when that is a number); a NaN estimate fails the test and the grid decides.
-  const int axis = testsX <= testsY ? 0 : 1;
-  if (!((axis == 0 ? testsX : testsY) <= sweepTestsPerBox)) return false;
-  // An even spread is only an estimate (clusters far apart look spread): past a few times the
-  // expected number of tests the sweep gives up, and the grid does the job.
-  const std::size_t maxTests = static_cast<std::size_t>(3 * sweepTestsPerBox) * boxes.size();
-  return sweep_.findPairs(boxes, axis, maxTests, pairs);
 }
 
 namespace {

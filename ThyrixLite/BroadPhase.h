@@ -59,7 +59,6 @@ class BroadPhase {
  private:
   void findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint64_t moved, bool remembered,
                          std::vector<BoxPair>& pairs);
-  bool findPairsBySweep(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
   void findPairsInGrid(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
   void findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::int64_t lowX,
                             std::int64_t lowY, std::int64_t columns, std::int64_t rows,

@@ -20,15 +20,40 @@ bool hasNaN(const BoundingBox& box) {
 
 void SweepAndPrune::reserve(std::uint32_t count) { entries_.reserve(count); }
 
-bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, int axis, std::size_t maxTests,
+bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, real testsPerBox,
                               std::vector<BoxPair>& pairs) {
+  // How many boxes each box would be tested against along each axis, if the boxes were spread
+  // evenly over the span they cover on it: their count times their mean extent over the span
+  // (which includes the extents: boxes on top of each other give the count, not a division by
+  // zero). Summed in index order, so that the choice depends on the boxes only.
+  real extentX = 0;
+  real extentY = 0;
+  real lowX = realMax;
+  real lowY = realMax;
+  real highX = -realMax;
+  real highY = -realMax;
+  for (const BoundingBox& box : boxes) {
+    extentX += box.upper.x - box.lower.x;
+    extentY += box.upper.y - box.lower.y;
+    lowX = std::min(lowX, box.lower.x);
+    lowY = std::min(lowY, box.lower.y);
+    highX = std::max(highX, box.upper.x);
+    highY = std::max(highY, box.upper.y);
+  }
+  const real testsX = extentX / (highX - lowX);
+  const real testsY = extentY / (highY - lowY);
+  // Along x unless y looks better or x is NaN (an infinite extent, or a NaN box: then along y
+  // when that is a number); a NaN estimate declines.
+  const int axis = testsX <= testsY ? 0 : 1;
+  if (!((axis == 0 ? testsX : testsY) <= testsPerBox)) return false;
+
+  // The entries, in the last call's order when it held the same boxes along the same axis
+  // (every index once: no box was left out for a NaN), else in index order.
   const auto count = static_cast<std::uint32_t>(boxes.size());
   const auto entryOf = [axis](const BoundingBox& box, std::uint32_t index) {
     return axis == 0 ? Entry{box.lower.x, box.upper.x, box.lower.y, box.upper.y, index}
                      : Entry{box.lower.y, box.upper.y, box.lower.x, box.upper.x, index};
   };
-  // The last call's order is a good start when it held the same boxes along the same axis
-  // (every index once: no box was left out for a NaN); otherwise start from index order.
   const bool keepOrder = axis == axis_ && count == count_ && entries_.size() == count;
   std::size_t kept = 0;
   if (keepOrder) {
@@ -49,9 +74,11 @@ bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, int axis, std:
   // Each box against the boxes after it that start before it ends on the axis; the first that
   // starts beyond ends the scan (all later ones start later still). The scan's condition is
   // one side of the overlap on the axis; the other side is tested, as are both on the other
-  // axis, so the pairs are exactly those BoundingBox::overlaps() accepts.
+  // axis, so the pairs are exactly those BoundingBox::overlaps() accepts. Past a few times the
+  // expected number of tests (clusters far apart look evenly spread), the sweep gives up.
   const std::size_t start = pairs.size();
   const std::size_t n = entries_.size();
+  const std::size_t maxTests = static_cast<std::size_t>(3 * testsPerBox * static_cast<real>(n));
   std::size_t tests = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const Entry p = entries_[k];

@@ -16,8 +16,8 @@ namespace thyrix {
 /// follow it in that order until one starts beyond its upper side: only boxes whose intervals
 /// on the axis overlap are ever tested, so the cost is linear in the boxes plus those interval
 /// overlaps. That is small when the boxes are spread along the axis (a hanging chain along y,
-/// a row along x), and quadratic when they are piled across it: BroadPhase chooses the axis
-/// and when to use this at all, and this gives up past a budget of tests (see findPairs()).
+/// a row along x), and quadratic when they are piled across it: findPairs() estimates which
+/// axis serves, and declines piles (BroadPhase then uses its grid).
 ///
 /// The order of the last call is the start of the next sort (insertion sort): boxes that moved
 /// a little need only a few swaps. The sorted order is a strict total order of the boxes, so
@@ -28,10 +28,13 @@ namespace thyrix {
 class SweepAndPrune {
  public:
   /// Appends to @p pairs every pair of overlapping @p boxes, `first < second`, each once, in
-  /// sweep order, sweeping along x (@p axis 0) or y (1). Gives up, with @p pairs as it was,
-  /// and returns false, when that would take more than @p maxTests box tests; else true.
-  bool findPairs(std::span<const BoundingBox> boxes, int axis, std::size_t maxTests,
-                 std::vector<BoxPair>& pairs);
+  /// sweep order, and returns true; or returns false, with @p pairs as it was, when the boxes
+  /// are not strung out along x or y. That is, when spread evenly over the span they cover,
+  /// each box would overlap more than @p testsPerBox others on the axis (the count times the
+  /// mean extent over the span), for both axes; or, since an even spread is only an estimate
+  /// (clusters far apart look spread), when the sweep takes more than 3 times as many tests.
+  /// The axis is the one with the lower estimate.
+  bool findPairs(std::span<const BoundingBox> boxes, real testsPerBox, std::vector<BoxPair>& pairs);
 
   /// Sizes the buffers for @p count boxes, so that calls with no more boxes do not allocate.
   void reserve(std::uint32_t count);
@@ -49,7 +52,7 @@ class SweepAndPrune {
   void sort();
 
   std::vector<Entry> entries_;  // the boxes in sweep order (the last call's, until sorted)
-  int axis_ = -1;               // the last call's axis, -1 before the first call
+  int axis_ = -1;               // the last call's axis (0 x, 1 y), -1 before the first call
   std::uint32_t count_ = 0;     // the last call's box count
 };
 
