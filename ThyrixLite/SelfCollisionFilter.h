@@ -24,25 +24,24 @@ namespace thyrix {
 class SelfCollisionFilter {
  public:
   /// Sets the rules: primitive k (in the object's `primitives()` order) belongs to part
-  /// `partOf[k]`, and the parts of each pair in @p apart never touch (either order; a pair may
-  /// repeat). Part numbers are small: the table has one entry per part up to the largest.
+  /// `partOf[k]` (one entry per primitive), and the parts of each pair in @p apart never touch
+  /// (either order; a pair may repeat). Part numbers are small: the table has one entry per
+  /// part up to the largest.
   void assign(std::span<const std::uint32_t> partOf,
               std::span<const std::pair<std::uint32_t, std::uint32_t>> apart);
 
   /// Whether the object's primitives number @p a and @p b (in `primitives()` order) may touch.
   [[nodiscard]] bool mayTouch(std::size_t a, std::size_t b) const {
     if (partOf_.empty()) return a != b;
-    return partsMayTouch(partOf_[a], partOf_[b]);
+    // assign() gave every part of a primitive its list: no range check.
+    return listedPartsMayTouch(partOf_[a], partOf_[b]);
   }
 
   /// Whether primitives of parts @p a and @p b may touch: not within one part, nor between
   /// parts declared apart.
   [[nodiscard]] bool partsMayTouch(std::uint32_t a, std::uint32_t b) const {
-    if (a == b) return false;
-    if (a + std::size_t{1} >= apartStart_.size()) return true;  // none declared apart from a
-    for (std::uint32_t k = apartStart_[a]; k < apartStart_[a + 1]; ++k)
-      if (apart_[k] == b) return false;
-    return true;
+    if (a + std::size_t{1} >= apartStart_.size()) return a != b;  // none declared apart from a
+    return listedPartsMayTouch(a, b);
   }
 
   /// The part of primitive @p k (in `primitives()` order); k itself before assign().
@@ -51,6 +50,14 @@ class SelfCollisionFilter {
   }
 
  private:
+  // partsMayTouch() for a part @p a that has a list.
+  [[nodiscard]] bool listedPartsMayTouch(std::uint32_t a, std::uint32_t b) const {
+    if (a == b) return false;
+    for (std::uint32_t k = apartStart_[a]; k < apartStart_[a + 1]; ++k)
+      if (apart_[k] == b) return false;
+    return true;
+  }
+
   std::vector<std::uint32_t> partOf_;      // per primitive
   std::vector<std::uint32_t> apartStart_;  // per part + 1: where its list in apart_ begins
   std::vector<std::uint32_t> apart_;       // per part, the parts it never touches
