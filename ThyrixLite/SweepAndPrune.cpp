@@ -1,23 +1,8 @@
 #include <ThyrixLite/SweepAndPrune.h>
 
 #include <algorithm>
-#include <cmath>
 
 namespace thyrix {
-namespace {
-
-/// Any corner coordinate NaN: the box overlaps nothing. The sum of the corners is NaN if one
-/// is (a test per box instead of four); only then, or when infinities of both signs meet,
-/// are they looked at one by one.
-bool hasNaN(const BoundingBox& box) {
-  if (!std::isnan(box.lower.x + box.lower.y + box.upper.x + box.upper.y)) [[likely]]
-    return false;
-  return std::isnan(box.lower.x) || std::isnan(box.lower.y) || std::isnan(box.upper.x) ||
-         std::isnan(box.upper.y);
-}
-
-}  // namespace
-
 void SweepAndPrune::reserve(std::uint32_t count) { entries_.reserve(count); }
 
 bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, real testsPerBox,
@@ -47,28 +32,22 @@ bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, real testsPerB
   const int axis = testsX <= testsY ? 0 : 1;
   if (!((axis == 0 ? testsX : testsY) <= testsPerBox)) return false;
 
-  // The entries, in the last call's order when it held the same boxes along the same axis
-  // (every index once: no box was left out for a NaN), else in index order.
+  // The entries, in the last call's order when it held as many boxes along the same axis,
+  // else in index order. No coordinate on this axis is NaN (its estimate would be NaN): the
+  // sort's order is strict and total. A NaN on the other axis fails every comparison, so such
+  // a box pairs with nothing, as with BoundingBox::overlaps().
   const auto count = static_cast<std::uint32_t>(boxes.size());
-  const auto entryOf = [axis](const BoundingBox& box, std::uint32_t index) {
-    return axis == 0 ? Entry{box.lower.x, box.upper.x, box.lower.y, box.upper.y, index}
-                     : Entry{box.lower.y, box.upper.y, box.lower.x, box.upper.x, index};
-  };
-  const bool keepOrder = axis == axis_ && count == count_ && entries_.size() == count;
-  std::size_t kept = 0;
-  if (keepOrder) {
-    for (const Entry& e : entries_) {
-      const BoundingBox& box = boxes[e.index];
-      if (!hasNaN(box)) entries_[kept++] = entryOf(box, e.index);
-    }
-  } else {
+  const bool keepOrder = axis == axis_ && entries_.size() == count;
+  if (!keepOrder) {
     entries_.resize(count);
-    for (std::uint32_t i = 0; i < count; ++i)
-      if (!hasNaN(boxes[i])) entries_[kept++] = entryOf(boxes[i], i);
+    for (std::uint32_t i = 0; i < count; ++i) entries_[i].index = i;
   }
-  entries_.resize(kept);
+  for (Entry& e : entries_) {
+    const BoundingBox& box = boxes[e.index];
+    e = axis == 0 ? Entry{box.lower.x, box.upper.x, box.lower.y, box.upper.y, e.index}
+                  : Entry{box.lower.y, box.upper.y, box.lower.x, box.upper.x, e.index};
+  }
   axis_ = axis;
-  count_ = count;
   sort();
 
   // Each box against the boxes after it that start before it ends on the axis; the first that

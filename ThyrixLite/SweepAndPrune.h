@@ -24,7 +24,8 @@ namespace thyrix {
 /// the output depends only on the input, never on the previous call.
 ///
 /// A box with a NaN corner overlaps nothing (every comparison with it is false), as in
-/// BoundingBox::overlaps(); it is left out. Buffers are kept between calls.
+/// BoundingBox::overlaps(): the sweep runs along an axis without NaN, or declines. Buffers
+/// are kept between calls.
 class SweepAndPrune {
  public:
   /// Appends to @p pairs every pair of overlapping @p boxes, `first < second`, each once, in
@@ -53,7 +54,6 @@ class SweepAndPrune {
 
   std::vector<Entry> entries_;  // the boxes in sweep order (the last call's, until sorted)
   int axis_ = -1;               // the last call's axis (0 x, 1 y), -1 before the first call
-  std::uint32_t count_ = 0;     // the last call's box count
 };
 
 }  // namespace thyrix
