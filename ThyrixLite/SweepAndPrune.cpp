@@ -3,6 +3,7 @@
 #include <algorithm>
 
 namespace thyrix {
+
 void SweepAndPrune::reserve(std::uint32_t count) { entries_.reserve(count); }
 
 bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, real testsPerBox,
