@@ -50,6 +50,8 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const s
     return;
   }
   rememberedCount_ = 0;
+  reserveFor(count);
+  if (allowSweep && sweep_.findPairs(boxes, sweepTestsPerBox, pairs)) return;
   findPairsInGrid(boxes, pairs);
 }
 
@@ -126,12 +128,12 @@ void BroadPhase::reserveFor(std::uint32_t count) {
   for (auto* buffer : {&cellOfBox_, &sortedBoxes_, &oversized_}) buffer->reserve(count);
   cellX_.reserve(count);
   cellY_.reserve(count);
+  sweep_.reserve(count);
   reservedCount_ = count;
 }
 
 void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
   const auto count = static_cast<std::uint32_t>(boxes.size());
-  reserveFor(count);
   // Cells as small as the largest box allows (about one box per cell for similar sizes), but
   // no larger than twice the mean: rare big boxes are handled as oversized instead.
   real meanExtent = 0;

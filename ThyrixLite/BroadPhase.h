@@ -2,7 +2,8 @@
 /// @file BroadPhase.h
 /// @brief Finds the pairs of overlapping bounding boxes in near-linear time.
 
-#include <ThyrixLite/Vector2.h>
+#include <ThyrixLite/BoundingBox.h>
+#include <ThyrixLite/SweepAndPrune.h>
 
 #include <cstdint>
 #include <span>
@@ -10,35 +11,19 @@
 
 namespace thyrix {
 
-/// An axis-aligned bounding box.
-struct BoundingBox {
-  Vector2 lower;  ///< minimum corner
-  Vector2 upper;  ///< maximum corner
-
-  /// True when the two boxes overlap or touch.
-  [[nodiscard]] bool overlaps(const BoundingBox& o) const {
-    return lower.x <= o.upper.x && o.lower.x <= upper.x && lower.y <= o.upper.y &&
-           o.lower.y <= upper.y;
-  }
-};
-
-/// A candidate pair of box indices, `first < second`.
-struct BoxPair {
-  std::uint32_t first;   ///< lower index
-  std::uint32_t second;  ///< higher index
-};
-
 /// Finds every pair of overlapping boxes.
 ///
 /// Up to smallCount boxes, every pair is tested, and the result is remembered as one bit mask
 /// per box: a later call that is told which boxes moved tests only the pairs with a moved box.
-/// Above, boxes go into a uniform grid rebuilt every call by counting sort; the cell side is as
+/// Above, boxes strung out along a line (few boxes per length of the line along x or along y:
+/// a chain, a row) are sorted and swept along that axis (SweepAndPrune); the others go into a
+/// uniform grid rebuilt every call by counting sort; the cell side is as
 /// small as the largest box allows (at most twice the mean), and a box larger than a cell is
 /// "oversized" and tested against all boxes (few such boxes keep this linear). Every other box
 /// lies in one cell (by its centre) and can only overlap boxes in the 3 x 3 neighbouring cells.
 /// The grid is a dense array of cells when the boxes fill their bounding rectangle well (piles:
 /// neighbouring cells are then contiguous in memory), else a hash table of cells (scattered
-/// boxes). Both give the same pairs in the same order.
+/// boxes). Both grids give the same pairs in the same order; the sweep gives them in its own.
 ///
 /// The output order depends only on the input, so runs are reproducible. Buffers are kept
 /// between calls: once warmed up with as many boxes, finding pairs allocates nothing.
@@ -61,6 +46,15 @@ class BroadPhase {
 
   /// With false the grid always hashes its cells (for tests comparing the two grids).
   bool allowDenseGrid = true;
+  /// With false more than smallCount boxes always go into the grid (for tests and
+  /// comparisons); with true a sweep is used when the boxes are strung out along an axis.
+  bool allowSweep = true;
+
+  /// The sweep is chosen when the boxes' mean extent along an axis, times their count, over the
+  /// span they cover on it (the expected number of boxes each must be tested against)
+  /// is at most this. A line of boxes end to end gives about 1, a filled square of n boxes
+  /// about sqrt(n).
+  static constexpr real sweepTestsPerBox = 4;
 
  private:
   void findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint64_t moved, bool remembered,
@@ -87,6 +81,8 @@ class BroadPhase {
   std::vector<std::uint32_t> cellCursor_;    // fill position of each cell during the sort
   std::vector<std::uint32_t> sortedBoxes_;   // regular boxes grouped by cell, by index within
   std::vector<std::uint32_t> oversized_;     // boxes larger than a cell
+
+  SweepAndPrune sweep_;  // boxes along a line
 };
 
 }  // namespace thyrix

@@ -4,6 +4,7 @@
 /// contact solver sees it.
 
 #include <ThyrixLite/PhysicalObject.h>
+#include <ThyrixLite/SelfCollisionFilter.h>
 
 #include <span>
 #include <vector>
@@ -55,11 +56,17 @@ class MultiBodyObject : public PhysicalObject {
   /// Appends this step's internal constraints (joints at or beyond a limit) for a step of @p dt.
   virtual void collectInternalConstraints(real dt, std::vector<InternalConstraint>& out) = 0;
 
-  /// Whether two of its own primitives may touch (e.g. links that are not neighbours).
-  [[nodiscard]] virtual bool selfCollides(const Primitive& a, const Primitive& b) const = 0;
+  /// Which of its own primitives may touch each other (e.g. links that are not neighbours).
+  /// The simulator reads it for every candidate pair of two of the object's primitives, which
+  /// is why it is a table and not a virtual function. Every pair may touch unless the
+  /// subclass sets selfCollision_.
+  [[nodiscard]] const SelfCollisionFilter& selfCollision() const { return selfCollision_; }
 
  protected:
   using PhysicalObject::PhysicalObject;
+
+  /// The self-collision rules, set by the subclass when it is built, before registration.
+  SelfCollisionFilter selfCollision_;
 };
 
 }  // namespace thyrix

@@ -28,6 +28,13 @@ std::uint64_t wordMask(std::size_t word, std::size_t count) {
   return rest >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << rest) - 1;
 }
 
+/// Whether shapes @p a and @p b of one body, whose shapes begin at @p first, may touch: only
+/// a multi-body object's may, and only where its filter says (its neighbouring links never do).
+bool ownShapesMayTouch(const MultiBodyObject* multi, std::uint32_t first, std::uint32_t a,
+                       std::uint32_t b) {
+  return multi != nullptr && multi->selfCollision().mayTouch(a - first, b - first);
+}
+
 }  // namespace
 
 // Inline: called per moved shape from updateGeometry, the only caller.
@@ -175,6 +182,12 @@ void Simulator::detectContacts() {
   for (const BoxPair& pair : pairs_) {
     const std::uint32_t a = gridShapes_[pair.first];
     const std::uint32_t b = gridShapes_[pair.second];
+    // Pairs within one body are settled here, without a call: a chain's neighbouring links
+    // overlap in every step and never touch.
+    const std::uint32_t body = shapes_[a].body;
+    if (body == shapes_[b].body &&
+        !ownShapesMayTouch(multiBodies_[body], bodyStates_[body].firstShape, a, b))
+      continue;
     if (reuse && (shapeMoved_[a] | shapeMoved_[b]) == 0)
       reuseContacts(a, b);
     else
@@ -264,10 +277,9 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
   const Shape& b = shapes_[shapeB];
   if (!a.movable && !b.movable) return;
   if (a.group != 0 && a.group == b.group) return;
-  if (a.body == b.body) {
-    const MultiBodyObject* multi = multiBodies_[a.body];
-    if (multi == nullptr || !multi->selfCollides(*a.primitive, *b.primitive)) return;
-  }
+  if (a.body == b.body &&
+      !ownShapesMayTouch(multiBodies_[a.body], bodyStates_[a.body].firstShape, shapeA, shapeB))
+    return;
   const ShapeGeometry& ga = geometry_[shapeA];
   const ShapeGeometry& gb = geometry_[shapeB];
   const real margin = a.type == ShapeType::HalfPlane ? gb.margin : std::min(ga.margin, gb.margin);

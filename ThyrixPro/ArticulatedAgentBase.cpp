@@ -158,6 +158,8 @@ ArticulatedAgentBase::ArticulatedAgentBase(const std::vector<ArticulatedBasePart
     linkShapes_.push_back(std::move(shape));
   }
 
+  setSelfCollisionRules();
+
   // As for a ComposedPhysicalObject, the description frame starts at the world origin, so the
   // base's centre of mass is at centreOffset_ until the agent is moved.
   body_.setJointAngles(layout.angles);
@@ -272,19 +274,42 @@ real ArticulatedAgentBase::contactForceOn(int b) const {
 
 // --- collisions, validation, drawing ---------------------------------------------------------
 
-bool ArticulatedAgentBase::selfCollides(const Primitive& a, const Primitive& b) const {
-  const int ba = bodyOf(a);
-  const int bb = bodyOf(b);
-  if (ba == bb) return false;  // the base's parts, which are one rigid body
+void ArticulatedAgentBase::setSelfCollisionRules() {
+  // Part 0 is the base (all its primitives: one rigid body), part i + 1 link i; the primitives
+  // are the base's parts, then the links, in that order (the constructor added them so).
+  const auto partOf = [](int b) { return static_cast<std::uint32_t>(b + 1); };
+  const int n = linkCount();
+  std::vector<std::uint32_t> parts(baseParts_.size(), partOf(base));
+  for (int i = 0; i < n; ++i) parts.push_back(partOf(i));
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> apart;
   // A joint's two bodies overlap around it by construction (a capsule's cap covers its joint).
-  if (parent(ba) == bb || parent(bb) == ba) return false;
-  // Siblings on one joint point (a fork at a parent's tip) overlap there at every angle.
-  if (ba != base && bb != base && parent(ba) == parent(bb)) {
-    const Vector2 gap = body_.link(ba).jointPosition - body_.link(bb).jointPosition;
-    const real reach = a.radius() + b.radius();
-    if (gap.lengthSquared() < reach * reach) return false;
+  for (int i = 0; i < n; ++i) apart.emplace_back(partOf(i), partOf(parent(i)));
+  // Siblings on one joint point (a fork at a parent's tip, or links on the base at one point)
+  // overlap there at every angle. The links grouped by parent (counting sort), then each
+  // group's pairs: a fork has a few children.
+  std::vector<int> childStart(index(n) + 2, 0);
+  for (int i = 0; i < n; ++i) ++childStart[index(parent(i) + 2)];
+  for (std::size_t p = 1; p < childStart.size(); ++p) childStart[p] += childStart[p - 1];
+  std::vector<int> children(index(n));
+  std::vector<int> fill(childStart.begin(), childStart.end() - 1);
+  for (int i = 0; i < n; ++i) children[index(fill[index(parent(i) + 1)]++)] = i;
+  for (std::size_t p = 0; p + 1 < childStart.size(); ++p) {
+    for (int x = childStart[p]; x < childStart[p + 1]; ++x) {
+      for (int y = x + 1; y < childStart[p + 1]; ++y) {
+        const int a = children[index(x)];
+        const int b = children[index(y)];
+        const Vector2 gap = body_.link(a).jointPosition - body_.link(b).jointPosition;
+        const real reach = linkShapes_[index(a)]->radius() + linkShapes_[index(b)]->radius();
+        if (gap.lengthSquared() < reach * reach) apart.emplace_back(partOf(a), partOf(b));
+      }
+    }
   }
-  return true;
+  selfCollision_.assign(parts, apart);
+}
+
+bool ArticulatedAgentBase::selfCollides(const Primitive& a, const Primitive& b) const {
+  return selfCollision_.partsMayTouch(static_cast<std::uint32_t>(bodyOf(a) + 1),
+                                      static_cast<std::uint32_t>(bodyOf(b) + 1));
 }
 
 void ArticulatedAgentBase::validate() const {

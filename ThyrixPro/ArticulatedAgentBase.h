@@ -216,8 +216,10 @@ class ArticulatedAgentBase : public MultiBodyObject {
   /// False for two shapes of the same body, for a link and its parent (the base included), and
   /// for two links on the same parent whose joints are closer than the sum of their radii (they
   /// overlap around the shared joint whatever their angles); true otherwise, e.g. for a
-  /// folded chain touching itself or a leg touching the base it is not attached to.
-  [[nodiscard]] bool selfCollides(const Primitive& a, const Primitive& b) const override;
+  /// folded chain touching itself or a leg touching the base it is not attached to. The rules
+  /// are set once, when the agent is built, as its selfCollision() table, which the simulator
+  /// reads; this answers from it for two of the agent's primitives.
+  [[nodiscard]] bool selfCollides(const Primitive& a, const Primitive& b) const;
   /// Also checks limitMargin (finite, non-negative) and that every primitive is the agent's own
   /// (an ArticulatedComponent).
   void validate() const override;
@@ -269,6 +271,8 @@ class ArticulatedAgentBase : public MultiBodyObject {
   ArticulatedAgentBase(const std::vector<ArticulatedBasePart>& baseParts, Layout layout);
   static Layout describe(const std::vector<ArticulatedBasePart>& baseParts,
                          const std::vector<ArticulatedLimb>& limbs);
+  /// Fills selfCollision_ with the rules selfCollides() describes.
+  void setSelfCollisionRules();
   /// Throws the InvalidArgument that applyLinkForce() owes for these arguments, if any.
   void refuseLinkForce(int b, Vector2 force, Vector2 worldPoint) const;
 

@@ -449,6 +449,14 @@ TEST_P(ArticulatedAgentTest, FoldedChainTouchesItselfWithoutInterpenetrating) {
     simulator.advanceTime();
     self += selfContacts(agent);
     EXPECT_LT(scenes::largestOverlap(simulator), real(0.02)) << "step " << step;
+    // Never between neighbours (a link and its parent overlap at their joint, untouched).
+    for (std::size_t k = 0; k < agent.contacts.size(); ++k) {
+      const LinkContactInfo c = agent.linkContact(k);
+      if (c.other != &agent) continue;
+      const int other = Agent::bodyOf(*c.otherPrimitive);
+      EXPECT_NE(agent.parent(c.body), other) << "step " << step;
+      EXPECT_NE(agent.parent(other), c.body) << "step " << step;
+    }
   }
   EXPECT_GT(self, 0) << "the folded chain should touch itself";
   // Frictionless, the curled chain may keep sliding along itself, but slowly: the contacts,

@@ -5,6 +5,7 @@
 
 #include <ThyrixLite/BroadPhase.h>
 #include <Tools/MTRandom.h>
+#include <Tools/MathTools.h>
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <limits>
 #include <new>
 #include <utility>
 #include <vector>
@@ -278,6 +280,124 @@ TEST(BroadPhase, DenseAndHashedGridsGiveTheSameOrder) {
   hashed.findPairs(square, hashedPairs);
   expectSameAsBruteForce(square, densePairs);
   EXPECT_TRUE(samePairs(densePairs, hashedPairs));
+}
+
+/// A chain of @p count capsule-like boxes of length 1 and half width @p width, joint to joint,
+/// each turned from its parent by a random angle within @p bend (rad), from @p start.
+std::vector<BoundingBox> chainBoxes(std::uint32_t seed, int count, double bend, double width,
+                                    double startAngle, Vector2 start = {}) {
+  MTRandom random(seed);
+  std::vector<BoundingBox> boxes;
+  double angle = startAngle;
+  Vector2 joint = start;
+  for (int i = 0; i < count; ++i) {
+    angle += random.uniform(-bend, bend);
+    const Vector2 tip = joint + vec(std::cos(angle), std::sin(angle));
+    boxes.push_back({vec(std::min(joint.x, tip.x) - width, std::min(joint.y, tip.y) - width),
+                     vec(std::max(joint.x, tip.x) + width, std::max(joint.y, tip.y) + width)});
+    joint = tip;
+  }
+  return boxes;
+}
+
+TEST(BroadPhase, SweepMatchesBruteForceOnLinesOfBoxes) {
+  // Lines of boxes (the sweep's case): straight along x, along y and diagonal, bent chains that
+  // may fold onto themselves, rows of touching boxes, lines with stacked duplicates and with
+  // an oversized box; the sweep and the grid must both give brute force's pairs.
+  BroadPhase sweep;  // one instance over all cases, so stale orders would show
+  BroadPhase grid;
+  grid.allowSweep = false;
+  std::vector<BoxPair> sweepPairs;
+  std::vector<BoxPair> gridPairs;
+  std::vector<std::vector<BoundingBox>> layouts;
+  for (const double angle : {0.0, pi<double> / 2, pi<double> / 4, -2.0, pi<double>})
+    layouts.push_back(chainBoxes(1, 500, 0.0, 0.125, angle, vec(-3, 7)));
+  for (std::uint32_t seed = 1; seed <= 4; ++seed) {
+    layouts.push_back(chainBoxes(seed, 1000, 0.3, 0.125, -pi<double> / 2));  // a hanging chain
+    layouts.push_back(chainBoxes(seed, 300, 1.5, 0.2, seed));                // folds onto itself
+  }
+  std::vector<BoundingBox> row;  // touching end to end, then two rows on top of each other
+  for (int i = 0; i < 200; ++i) row.push_back(box(i, 0, i + 1, 1));
+  layouts.push_back(row);
+  for (int i = 0; i < 200; ++i) row.push_back(box(i + 0.5, 1, i + 1.5, 2));
+  layouts.push_back(row);
+  std::vector<BoundingBox> stacked = chainBoxes(9, 400, 0.2, 0.1, 0.3);
+  for (int i = 0; i < 400; i += 7) stacked[i + 1] = stacked[i];  // identical boxes
+  stacked[123] = box(-10, -10, 500, 0);                          // oversized
+  layouts.push_back(stacked);
+  for (const std::vector<BoundingBox>& boxes : layouts) {
+    SCOPED_TRACE(::testing::Message() << "layout " << (&boxes - layouts.data()));
+    sweep.findPairs(boxes, sweepPairs);
+    grid.findPairs(boxes, gridPairs);
+    expectSameAsBruteForce(boxes, sweepPairs);
+    expectSameAsBruteForce(boxes, gridPairs);
+  }
+}
+
+TEST(BroadPhase, SweepFollowsMovingBoxes) {
+  // A chain swinging and a line of boxes drifting past each other, step after step: the sweep
+  // starts from its last order, which must never change the result.
+  BroadPhase moving;
+  std::vector<BoxPair> pairs;
+  std::vector<BoxPair> freshPairs;
+  MTRandom random(5);
+  for (int step = 0; step < 60; ++step) {
+    // The chain turns (large turns late: the order changes a lot, a full sort takes over).
+    const double angle = -pi<double> / 2 + 0.05 * step * step * 0.1;
+    std::vector<BoundingBox> boxes = chainBoxes(3, 600, 0.2, 0.125, angle);
+    // Boxes of a second line slide along the chain.
+    for (int i = 0; i < 100; ++i) {
+      const double y = -5.0 * i - 0.3 * step;
+      boxes.push_back(box(-0.5 + random.uniform(-0.1, 0.1), y, 0.5, y + 1));
+    }
+    moving.findPairs(boxes, pairs);
+    SCOPED_TRACE(::testing::Message() << "step " << step);
+    expectSameAsBruteForce(boxes, pairs);
+    BroadPhase fresh;  // no last order: the same pairs in the same order
+    fresh.findPairs(boxes, freshPairs);
+    ASSERT_TRUE(samePairs(pairs, freshPairs));
+  }
+}
+
+TEST(BroadPhase, SweepLeavesOutBoxesWithNaN) {
+  // A NaN corner overlaps nothing, as in BoundingBox::overlaps() (every comparison is false):
+  // the pairs are those of the same layout with the NaN boxes moved out of everyone's way.
+  std::vector<BoundingBox> boxes = chainBoxes(2, 200, 0.1, 0.125, 0.2);
+  const real nan = std::numeric_limits<real>::quiet_NaN();
+  boxes[10].lower.x = nan;
+  boxes[50].upper.x = nan;  // (x only: the estimate along y stays a number, the sweep runs)
+  std::vector<BoundingBox> away = boxes;
+  away[10] = box(1e6, 1e6, 1e6, 1e6);
+  away[50] = box(-1e6, 1e6, -1e6, 1e6);
+  BroadPhase broadPhase;
+  std::vector<BoxPair> pairs;
+  broadPhase.findPairs(boxes, pairs);
+  EXPECT_EQ(sortedPairs(pairs), bruteForce(away));
+  boxes[10] = boxes[11];  // finite again: found again, whatever the last call left out
+  away[10] = boxes[11];
+  broadPhase.findPairs(boxes, pairs);
+  EXPECT_EQ(sortedPairs(pairs), bruteForce(away));
+  // Infinite sides are numbers: a box across all x meets every box in its band of y.
+  const real inf = std::numeric_limits<real>::infinity();
+  boxes[100] = away[100] = {{-inf, boxes[100].lower.y}, {inf, boxes[100].upper.y}};
+  broadPhase.findPairs(boxes, pairs);
+  EXPECT_EQ(sortedPairs(pairs), bruteForce(away));
+}
+
+TEST(BroadPhase, SweepGivesUpOnCrowdsItCannotSee) {
+  // Two dense clusters far apart look like a sparse line to the even-spread estimate; the
+  // sweep then runs out of its budget and the grid must give the pairs.
+  std::vector<BoundingBox> boxes;
+  for (int c = 0; c < 2; ++c)
+    for (int j = 0; j < 20; ++j)
+      for (int i = 0; i < 20; ++i) {
+        const double x = c * 1e5 + i * 0.5;
+        boxes.push_back(box(x, j * 0.5, x + 1, j * 0.5 + 1));
+      }
+  BroadPhase broadPhase;
+  std::vector<BoxPair> pairs;
+  broadPhase.findPairs(boxes, pairs);
+  expectSameAsBruteForce(boxes, pairs);
 }
 
 TEST(BroadPhase, FewBoxesRetestOnlyTheMovedOnes) {

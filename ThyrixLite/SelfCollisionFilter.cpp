@@ -1,0 +1,28 @@
+#include <ThyrixLite/SelfCollisionFilter.h>
+
+#include <algorithm>
+
+namespace thyrix {
+
+void SelfCollisionFilter::assign(std::span<const std::uint32_t> partOf,
+                                 std::span<const std::pair<std::uint32_t, std::uint32_t>> apart) {
+  partOf_.assign(partOf.begin(), partOf.end());
+  std::uint32_t parts = 0;
+  for (const std::uint32_t part : partOf_) parts = std::max(parts, part + 1);
+  for (const auto& [a, b] : apart) parts = std::max({parts, a + 1, b + 1});
+  // Each pair listed under both of its parts (counting sort), so that a lookup reads one list.
+  apartStart_.assign(parts + 1, 0);
+  for (const auto& [a, b] : apart) {
+    ++apartStart_[a + 1];
+    ++apartStart_[b + 1];
+  }
+  for (std::uint32_t p = 0; p < parts; ++p) apartStart_[p + 1] += apartStart_[p];
+  apart_.resize(apartStart_[parts]);
+  std::vector<std::uint32_t> fill(apartStart_.begin(), apartStart_.end() - 1);
+  for (const auto& [a, b] : apart) {
+    apart_[fill[a]++] = b;
+    apart_[fill[b]++] = a;
+  }
+}
+
+}  // namespace thyrix

@@ -1,0 +1,66 @@
+#pragma once
+/// @file SelfCollisionFilter.h
+/// @brief Which primitives of one multi-body object may touch each other, as a table the
+/// simulator reads inline for every candidate pair (no virtual call per pair).
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace thyrix {
+
+/// The self-collision rules of a multi-body object (MultiBodyObject), declared once when the
+/// object is built: each of its primitives belongs to a part (for an articulated agent: the
+/// base or one link), two primitives of one part never touch, nor do those of two parts declared
+/// apart (a link and its parent, which overlap around their joint by construction); every other
+/// pair of its primitives may touch.
+///
+/// A chain of n links has about n candidate pairs of neighbours in every step, which must be
+/// dropped before the narrow phase: mayTouch() is inline and reads a few integers (the parts
+/// declared apart from a part are listed next to each other), where a virtual call per pair
+/// used to decide. Without assign(), every pair of different primitives may touch.
+class SelfCollisionFilter {
+ public:
+  /// Sets the rules: primitive k (in the object's `primitives()` order) belongs to part
+  /// `partOf[k]` (one entry per primitive), and the parts of each pair in @p apart never touch
+  /// (either order; a pair may repeat). Part numbers are small: the table has one entry per
+  /// part up to the largest.
+  void assign(std::span<const std::uint32_t> partOf,
+              std::span<const std::pair<std::uint32_t, std::uint32_t>> apart);
+
+  /// Whether the object's primitives number @p a and @p b (in `primitives()` order) may touch.
+  [[nodiscard]] bool mayTouch(std::size_t a, std::size_t b) const {
+    if (partOf_.empty()) return a != b;
+    // assign() gave every part of a primitive its list: no range check.
+    return listedPartsMayTouch(partOf_[a], partOf_[b]);
+  }
+
+  /// Whether primitives of parts @p a and @p b may touch: not within one part, nor between
+  /// parts declared apart.
+  [[nodiscard]] bool partsMayTouch(std::uint32_t a, std::uint32_t b) const {
+    if (a + std::size_t{1} >= apartStart_.size()) return a != b;  // none declared apart from a
+    return listedPartsMayTouch(a, b);
+  }
+
+  /// The part of primitive @p k (in `primitives()` order); k itself before assign().
+  [[nodiscard]] std::uint32_t partOf(std::size_t k) const {
+    return partOf_.empty() ? static_cast<std::uint32_t>(k) : partOf_[k];
+  }
+
+ private:
+  // partsMayTouch() for a part @p a that has a list.
+  [[nodiscard]] bool listedPartsMayTouch(std::uint32_t a, std::uint32_t b) const {
+    if (a == b) return false;
+    for (std::uint32_t k = apartStart_[a]; k < apartStart_[a + 1]; ++k)
+      if (apart_[k] == b) return false;
+    return true;
+  }
+
+  std::vector<std::uint32_t> partOf_;      // per primitive
+  std::vector<std::uint32_t> apartStart_;  // per part + 1: where its list in apart_ begins
+  std::vector<std::uint32_t> apart_;       // per part, the parts it never touches
+};
+
+}  // namespace thyrix

@@ -1,0 +1,103 @@
+#include <ThyrixLite/SweepAndPrune.h>
+
+#include <algorithm>
+
+namespace thyrix {
+
+void SweepAndPrune::reserve(std::uint32_t count) { entries_.reserve(count); }
+
+bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, real testsPerBox,
+                              std::vector<BoxPair>& pairs) {
+  // How many boxes each box would be tested against along each axis, if the boxes were spread
+  // evenly over the span they cover on it: their count times their mean extent over the span
+  // (which includes the extents: boxes on top of each other give the count, not a division by
+  // zero). Summed in index order, so that the choice depends on the boxes only.
+  real extentX = 0;
+  real extentY = 0;
+  real lowX = realMax;
+  real lowY = realMax;
+  real highX = -realMax;
+  real highY = -realMax;
+  for (const BoundingBox& box : boxes) {
+    extentX += box.upper.x - box.lower.x;
+    extentY += box.upper.y - box.lower.y;
+    lowX = std::min(lowX, box.lower.x);
+    lowY = std::min(lowY, box.lower.y);
+    highX = std::max(highX, box.upper.x);
+    highY = std::max(highY, box.upper.y);
+  }
+  const real testsX = extentX / (highX - lowX);
+  const real testsY = extentY / (highY - lowY);
+  // Along x unless y looks better or x is NaN (an infinite extent, or a NaN box: then along y
+  // when that is a number); a NaN estimate declines.
+  const int axis = testsX <= testsY ? 0 : 1;
+  if (!((axis == 0 ? testsX : testsY) <= testsPerBox)) return false;
+
+  // The entries, in the last call's order when it held as many boxes along the same axis,
+  // else in index order. No coordinate on this axis is NaN (its estimate would be NaN): the
+  // sort's order is strict and total. A NaN on the other axis fails every comparison, so such
+  // a box pairs with nothing, as with BoundingBox::overlaps().
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  const bool keepOrder = axis == axis_ && entries_.size() == count;
+  if (!keepOrder) {
+    entries_.resize(count);
+    for (std::uint32_t i = 0; i < count; ++i) entries_[i].index = i;
+  }
+  for (Entry& e : entries_) {
+    const BoundingBox& box = boxes[e.index];
+    e = axis == 0 ? Entry{box.lower.x, box.upper.x, box.lower.y, box.upper.y, e.index}
+                  : Entry{box.lower.y, box.upper.y, box.lower.x, box.upper.x, e.index};
+  }
+  axis_ = axis;
+  sort();
+
+  // Each box against the boxes after it that start before it ends on the axis; the first that
+  // starts beyond ends the scan (all later ones start later still). The scan's condition is
+  // one side of the overlap on the axis; the other side is tested, as are both on the other
+  // axis, so the pairs are exactly those BoundingBox::overlaps() accepts. Past a few times the
+  // expected number of tests (clusters far apart look evenly spread), the sweep gives up.
+  const std::size_t start = pairs.size();
+  const std::size_t n = entries_.size();
+  const std::size_t maxTests = static_cast<std::size_t>(3 * testsPerBox * static_cast<real>(n));
+  std::size_t tests = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Entry p = entries_[k];
+    std::size_t m = k + 1;
+    for (; m < n && entries_[m].lower <= p.upper; ++m) {
+      const Entry& q = entries_[m];
+      if (p.lower <= q.upper && p.crossLower <= q.crossUpper && q.crossLower <= p.crossUpper)
+        pairs.push_back({std::min(p.index, q.index), std::max(p.index, q.index)});
+    }
+    tests += m - k - 1;
+    if (tests > maxTests) {
+      pairs.resize(start);
+      return false;
+    }
+  }
+  return true;
+}
+
+void SweepAndPrune::sort() {
+  const auto before = [](const Entry& a, const Entry& b) {
+    return a.lower < b.lower || (a.lower == b.lower && a.index < b.index);
+  };
+  // Insertion sort from the last order: a few swaps when the boxes moved a little. Past a
+  // budget of moves (the order changed a lot), a full sort finishes the job in n log n.
+  const std::size_t n = entries_.size();
+  std::size_t budget = 4 * n + 64;
+  for (std::size_t k = 1; k < n; ++k) {
+    if (!before(entries_[k], entries_[k - 1])) continue;
+    const Entry e = entries_[k];
+    std::size_t m = k;
+    for (; m > 0 && before(e, entries_[m - 1]); --m) entries_[m] = entries_[m - 1];
+    entries_[m] = e;
+    const std::size_t moved = k - m;
+    if (moved > budget) {
+      std::sort(entries_.begin(), entries_.end(), before);
+      return;
+    }
+    budget -= moved;
+  }
+}
+
+}  // namespace thyrix

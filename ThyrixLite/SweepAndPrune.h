@@ -1,0 +1,59 @@
+#pragma once
+/// @file SweepAndPrune.h
+/// @brief Finds the pairs of overlapping bounding boxes by sorting them along one axis and
+/// sweeping: fast for boxes strung out along a line (a chain, a row), which a grid serves badly.
+
+#include <ThyrixLite/BoundingBox.h>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace thyrix {
+
+/// Sort and sweep along one axis (Baraff 1992, "sort and sweep"). The boxes are sorted by their
+/// lower side along the axis (ties by index), then each box is tested against the boxes that
+/// follow it in that order until one starts beyond its upper side: only boxes whose intervals
+/// on the axis overlap are ever tested, so the cost is linear in the boxes plus those interval
+/// overlaps. That is small when the boxes are spread along the axis (a hanging chain along y,
+/// a row along x), and quadratic when they are piled across it: findPairs() estimates which
+/// axis serves, and declines piles (BroadPhase then uses its grid).
+///
+/// The order of the last call is the start of the next sort (insertion sort): boxes that moved
+/// a little need only a few swaps. The sorted order is a strict total order of the boxes, so
+/// the output depends only on the input, never on the previous call.
+///
+/// A box with a NaN corner overlaps nothing (every comparison with it is false), as in
+/// BoundingBox::overlaps(): the sweep runs along an axis without NaN, or declines. Buffers
+/// are kept between calls.
+class SweepAndPrune {
+ public:
+  /// Appends to @p pairs every pair of overlapping @p boxes, `first < second`, each once, in
+  /// sweep order, and returns true; or returns false, with @p pairs as it was, when the boxes
+  /// are not strung out along x or y. That is, when spread evenly over the span they cover,
+  /// each box would overlap more than @p testsPerBox others on the axis (the count times the
+  /// mean extent over the span), for both axes; or, since an even spread is only an estimate
+  /// (clusters far apart look spread), when the sweep takes more than 3 times as many tests.
+  /// The axis is the one with the lower estimate.
+  bool findPairs(std::span<const BoundingBox> boxes, real testsPerBox, std::vector<BoxPair>& pairs);
+
+  /// Sizes the buffers for @p count boxes, so that calls with no more boxes do not allocate.
+  void reserve(std::uint32_t count);
+
+ private:
+  /// A box as the sweep reads it: its interval on the sweep axis, then on the other axis.
+  struct Entry {
+    real lower;
+    real upper;
+    real crossLower;
+    real crossUpper;
+    std::uint32_t index;
+  };
+  /// Puts entries_ in sweep order: by lower side, then by index.
+  void sort();
+
+  std::vector<Entry> entries_;  // the boxes in sweep order (the last call's, until sorted)
+  int axis_ = -1;               // the last call's axis (0 x, 1 y), -1 before the first call
+};
+
+}  // namespace thyrix
