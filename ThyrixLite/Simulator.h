@@ -161,7 +161,7 @@ class Simulator : public World {
   };
 
   void updateGeometry();
-  void updateBodyBox(std::uint32_t body);
+  void addCachedBox(std::uint32_t shape, Vector2& boxMin, Vector2& boxMax) const;
   bool updateShape(std::uint32_t shape, bool poseKnown, Vector2& lower, Vector2& upper);
   void findBorderContacts(bool reuse);
   void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);

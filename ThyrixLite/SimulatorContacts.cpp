@@ -37,35 +37,28 @@ bool ownShapesMayTouch(const MultiBodyObject* multi, std::uint32_t first, std::u
 
 }  // namespace
 
-// Inline: called from updateGeometry, the only caller, for a composed body whose shapes did
-// not all move (the others build the body box as they go).
-inline void Simulator::updateBodyBox(std::uint32_t index) {
-  // The union of the body's shapes' boxes (margins excluded).
-  PhysicalObject& body = objects[index];
-  const BodyState& state = bodyStates_[index];
-  body.boxMin = {realMax, realMax};
-  body.boxMax = {-realMax, -realMax};
-  for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
-    const ShapeGeometry& g = geometry_[s];
-    Vector2 lower;
-    Vector2 upper;
-    switch (shapes_[s].type) {
-      case ShapeType::HalfPlane:
-        continue;  // unbounded: no box
-      case ShapeType::Circle:
-        lower = g.p0 - Vector2{g.radius, g.radius};
-        upper = g.p0 + Vector2{g.radius, g.radius};
-        break;
-      case ShapeType::Capsule:
-        lower = Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} -
-                Vector2{g.radius, g.radius};
-        upper = Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} +
-                Vector2{g.radius, g.radius};
-        break;
-    }
-    body.boxMin = {std::min(body.boxMin.x, lower.x), std::min(body.boxMin.y, lower.y)};
-    body.boxMax = {std::max(body.boxMax.x, upper.x), std::max(body.boxMax.y, upper.y)};
+// Inline: called from updateGeometry, the only caller, for the unmoved shapes of a composed
+// body some of whose shapes moved (their geometry is as updateShape left it).
+inline void Simulator::addCachedBox(std::uint32_t s, Vector2& boxMin, Vector2& boxMax) const {
+  const ShapeGeometry& g = geometry_[s];
+  Vector2 lower;
+  Vector2 upper;
+  switch (shapes_[s].type) {
+    case ShapeType::HalfPlane:
+      return;  // unbounded: no box
+    case ShapeType::Circle:
+      lower = g.p0 - Vector2{g.radius, g.radius};
+      upper = g.p0 + Vector2{g.radius, g.radius};
+      break;
+    case ShapeType::Capsule:
+      lower =
+          Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} - Vector2{g.radius, g.radius};
+      upper =
+          Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} + Vector2{g.radius, g.radius};
+      break;
   }
+  boxMin = {std::min(boxMin.x, lower.x), std::min(boxMin.y, lower.y)};
+  boxMax = {std::max(boxMax.x, upper.x), std::max(boxMax.y, upper.y)};
 }
 
 // Recomputes shape @p s's geometry and grid box; sets @p lower and @p upper to its box without
@@ -174,8 +167,10 @@ void Simulator::updateGeometry() {
       body.boxMax = boxMax;
       continue;
     }
+    // Once a shape has moved the body box is rebuilt, from every shape in order: those
+    // before the first moved one are added then, the unmoved ones after it as they come.
+    // A body none of whose shapes moved keeps its box and reads no shape's geometry.
     bool anyMoved = changed;
-    bool allMoved = true;  // then the box built below is the body's
     const std::uint32_t end = state.firstShape + state.shapeCount;
     for (std::uint32_t s = state.firstShape; s < end; ++s) {
       Primitive& primitive = *shapes_[s].primitive;
@@ -185,22 +180,20 @@ void Simulator::updateGeometry() {
           changed || !sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha);
       shapeMoved[s] = moved ? 1 : 0;
       if (!moved) {
-        allMoved = false;
+        if (anyMoved) addCachedBox(s, boxMin, boxMax);
         continue;
       }
-      primitive.followOwner();
+      if (!anyMoved)
+        for (std::uint32_t t = state.firstShape; t < s; ++t) addCachedBox(t, boxMin, boxMax);
       anyMoved = true;
+      primitive.followOwner();
       if (!updateShape(s, known, lower, upper)) continue;
       boxMin = {std::min(boxMin.x, lower.x), std::min(boxMin.y, lower.y)};
       boxMax = {std::max(boxMax.x, upper.x), std::max(boxMax.y, upper.y)};
     }
     if (!anyMoved) continue;
-    if (allMoved) {
-      body.boxMin = boxMin;
-      body.boxMax = boxMax;
-    } else {
-      updateBodyBox(index);  // the unmoved shapes' boxes are in geometry_ only
-    }
+    body.boxMin = boxMin;
+    body.boxMax = boxMax;
   }
 }
 
