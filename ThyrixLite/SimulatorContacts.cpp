@@ -137,14 +137,20 @@ void Simulator::updateGeometry() {
     const bool changed = everything || difference != 0;
     const bool known = state.fixed != BodyState::unknown;
     if (changed) {
+      // The filters copied to the shapes depend on `fixed` and `collisionGroup` only (and on
+      // multiBodies_, set at registration): a body that only moved leaves them as they are.
+      const bool newFilters =
+          ((body.collisionGroup ^ state.group) | (std::uint32_t{body.fixed} ^ state.fixed)) != 0;
       state.r = body.r;
       state.alpha = body.alpha;
-      state.fixed = body.fixed ? 1 : 0;
-      state.group = body.collisionGroup;
-      state.movable = movable(index);
-      for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
-        shapes_[s].group = state.group;  // the filters, next to the shapes for the narrow phase
-        shapes_[s].movable = state.movable;
+      if (newFilters) {
+        state.fixed = body.fixed ? 1 : 0;
+        state.group = body.collisionGroup;
+        state.movable = movable(index);
+        for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
+          shapes_[s].group = state.group;  // next to the shapes for the narrow phase
+          shapes_[s].movable = state.movable;
+        }
       }
     }
     // The body box is the union of its shapes' boxes, taken in shape order (so NaNs and
