@@ -88,8 +88,12 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
     const auto shape = static_cast<std::uint32_t>(shapes_.size());
     shapes_.push_back(
         {primitive, &object, static_cast<std::uint32_t>(index), 0, primitive->shapeType(), false});
-    geometry_.push_back({});
+    // A primitive's radius and half length are fixed at construction: kept here once, with
+    // the margin of the fraction the cached margins were computed with (updateGeometry
+    // recomputes every margin when the fraction changes).
+    geometry_.push_back({{}, {}, primitive->radius(), geometryFraction_ * primitive->radius()});
     shapePoses_.push_back({});
+    shapePoses_.back().halfLength = primitive->halfLength();
     shapeMoved_.push_back(1);
     if (primitive->shapeType() == ShapeType::HalfPlane) {
       borderShapes_.push_back(shape);

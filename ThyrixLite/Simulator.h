@@ -151,16 +151,18 @@ class Simulator : public World {
     bool movable = false;
     bool standalone = false;  // the body is its one primitive
   };
-  /// The pose of a primitive its geometry was computed from, and its capsule half axis.
+  /// The pose of a primitive its geometry was computed from, its capsule half axis, and its
+  /// half length (fixed at construction: copied here so a moved shape reads one record).
   struct ShapePose {
     Vector2 r;
     real alpha = 0;
     Vector2 axis;
+    real halfLength = 0;
   };
 
   void updateGeometry();
-  void updateBodyBox(std::uint32_t body);
-  void updateShape(std::uint32_t shape, bool poseKnown);
+  void addCachedBox(std::uint32_t shape, Vector2& boxMin, Vector2& boxMax) const;
+  bool updateShape(std::uint32_t shape, bool poseKnown, Vector2& lower, Vector2& upper);
   void findBorderContacts(bool reuse);
   void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB);

@@ -37,80 +37,86 @@ bool ownShapesMayTouch(const MultiBodyObject* multi, std::uint32_t first, std::u
 
 }  // namespace
 
-// Inline: called per moved shape from updateGeometry, the only caller.
-inline void Simulator::updateBodyBox(std::uint32_t index) {
-  // The union of the body's shapes' boxes (margins excluded).
-  PhysicalObject& body = objects[index];
-  const BodyState& state = bodyStates_[index];
-  body.boxMin = {realMax, realMax};
-  body.boxMax = {-realMax, -realMax};
-  for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
-    const ShapeGeometry& g = geometry_[s];
-    Vector2 lower;
-    Vector2 upper;
-    switch (shapes_[s].type) {
-      case ShapeType::HalfPlane:
-        continue;  // unbounded: no box
-      case ShapeType::Circle:
-        lower = g.p0 - Vector2{g.radius, g.radius};
-        upper = g.p0 + Vector2{g.radius, g.radius};
-        break;
-      case ShapeType::Capsule:
-        lower = Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} -
-                Vector2{g.radius, g.radius};
-        upper = Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} +
-                Vector2{g.radius, g.radius};
-        break;
-    }
-    body.boxMin = {std::min(body.boxMin.x, lower.x), std::min(body.boxMin.y, lower.y)};
-    body.boxMax = {std::max(body.boxMax.x, upper.x), std::max(body.boxMax.y, upper.y)};
+// Inline: called from updateGeometry, the only caller, for the unmoved shapes of a composed
+// body some of whose shapes moved (their geometry is as updateShape left it).
+inline void Simulator::addCachedBox(std::uint32_t s, Vector2& boxMin, Vector2& boxMax) const {
+  const ShapeGeometry& g = geometry_[s];
+  Vector2 lower;
+  Vector2 upper;
+  switch (shapes_[s].type) {
+    case ShapeType::HalfPlane:
+      return;  // unbounded: no box
+    case ShapeType::Circle:
+      lower = g.p0 - Vector2{g.radius, g.radius};
+      upper = g.p0 + Vector2{g.radius, g.radius};
+      break;
+    case ShapeType::Capsule:
+      lower =
+          Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} - Vector2{g.radius, g.radius};
+      upper =
+          Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} + Vector2{g.radius, g.radius};
+      break;
   }
+  boxMin = {std::min(boxMin.x, lower.x), std::min(boxMin.y, lower.y)};
+  boxMax = {std::max(boxMax.x, upper.x), std::max(boxMax.y, upper.y)};
 }
 
-inline void Simulator::updateShape(std::uint32_t s, bool poseKnown) {
+// Recomputes shape @p s's geometry and grid box; sets @p lower and @p upper to its box without
+// margin (what the body box is the union of) and returns true, or returns false for a
+// half-plane (unbounded: no box).
+// Radius and margin are not recomputed: they are in geometry_ since registration (the margin
+// since the last change of the fraction), and the half length is in shapePoses_.
+inline bool Simulator::updateShape(std::uint32_t s, bool poseKnown, Vector2& lower,
+                                   Vector2& upper) {
   Primitive& primitive = *shapes_[s].primitive;
   ShapePose& pose = shapePoses_[s];
   ShapeGeometry& g = geometry_[s];
-  g.radius = primitive.radius();
-  g.margin = settings_.speculativeFraction * g.radius;
-  switch (shapes_[s].type) {
+  const ShapeType type = shapes_[s].type;
+  const Vector2 r = primitive.r;
+  const real alpha = primitive.alpha;
+  switch (type) {
     case ShapeType::HalfPlane:
-      g.p0 = primitive.r;
+      g.p0 = r;
       g.p1 = static_cast<const Border&>(primitive).normal();
-      break;
+      pose.r = r;
+      pose.alpha = alpha;
+      return false;  // unbounded: no box, not in the grid
     case ShapeType::Circle:
-      g.p0 = primitive.r;  // a circle's geometry does not depend on its angle
+      g.p0 = r;  // a circle's geometry does not depend on its angle
+      g.p1 = r;  // (unread: lets the box below be the capsule's, min and max of equal ends)
       break;
     case ShapeType::Capsule:
       // The half axis turns with the angle only: a capsule that slides keeps it.
-      if (!poseKnown || !sameBits(primitive.alpha, pose.alpha))
+      if (!poseKnown || !sameBits(alpha, pose.alpha))
         // direction() is cached by the primitive, or set by an owner that placed it with
         // the (cos, sin) it already had (articulated links): no sine or cosine here then.
-        pose.axis = primitive.direction() * primitive.halfLength();
-      g.p0 = primitive.r - pose.axis;
-      g.p1 = primitive.r + pose.axis;
+        pose.axis = primitive.direction() * pose.halfLength;
+      g.p0 = r - pose.axis;
+      g.p1 = r + pose.axis;
       break;
   }
-  pose.r = primitive.r;
-  pose.alpha = primitive.alpha;
+  pose.r = r;
+  pose.alpha = alpha;
+  // The same boxes as before for a circle: min and max of two equal values are that value.
+  const Vector2 least{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)};
+  const Vector2 most{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)};
+  lower = least - Vector2{g.radius, g.radius};
+  upper = most + Vector2{g.radius, g.radius};
   const std::uint32_t slot = gridSlot_[s];
-  if (slot == ~0u) return;
   gridMovedBits_[slot / 64] |= std::uint64_t{1} << (slot % 64);
   // The shape's own box (not the body's), widened by its speculative margin.
   const Vector2 reach{g.radius + g.margin, g.radius + g.margin};
-  if (shapes_[s].type == ShapeType::Circle) {
-    gridBoxes_[slot] = {g.p0 - reach, g.p0 + reach};
-  } else {
-    gridBoxes_[slot] = {Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} - reach,
-                        Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} + reach};
-  }
+  gridBoxes_[slot] = {least - reach, most + reach};
+  return true;
 }
 
 void Simulator::updateGeometry() {
   // A new margin changes every shape's geometry; without rest skipping nothing is kept.
-  const bool everything =
-      !restSkipping || !sameBits(settings_.speculativeFraction, geometryFraction_);
+  const bool newFraction = !sameBits(settings_.speculativeFraction, geometryFraction_);
+  const bool everything = !restSkipping || newFraction;
   geometryFraction_ = settings_.speculativeFraction;
+  if (newFraction)  // the margins are kept, and depend on nothing else (radii are fixed)
+    for (ShapeGeometry& g : geometry_) g.margin = geometryFraction_ * g.radius;
   sensingPrimitives_.clear();
   gridMovedBits_.assign((gridShapes_.size() + 63) / 64, 0);
   // Local views: a store to the byte array shapeMoved_ may alias anything, which would make
@@ -131,26 +137,45 @@ void Simulator::updateGeometry() {
     const bool changed = everything || difference != 0;
     const bool known = state.fixed != BodyState::unknown;
     if (changed) {
+      // The filters copied to the shapes depend on `fixed` and `collisionGroup` only (and on
+      // multiBodies_, set at registration): a body that only moved leaves them as they are.
+      const bool newFilters =
+          ((body.collisionGroup ^ state.group) | (std::uint32_t{body.fixed} ^ state.fixed)) != 0;
       state.r = body.r;
       state.alpha = body.alpha;
-      state.fixed = body.fixed ? 1 : 0;
-      state.group = body.collisionGroup;
-      state.movable = movable(index);
-      for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
-        shapes_[s].group = state.group;  // the filters, next to the shapes for the narrow phase
-        shapes_[s].movable = state.movable;
+      if (newFilters) {
+        state.fixed = body.fixed ? 1 : 0;
+        state.group = body.collisionGroup;
+        state.movable = movable(index);
+        for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
+          shapes_[s].group = state.group;  // next to the shapes for the narrow phase
+          shapes_[s].movable = state.movable;
+        }
       }
     }
+    // The body box is the union of its shapes' boxes, taken in shape order (so NaNs and
+    // signed zeros come out as they always did), starting from the empty box.
+    Vector2 boxMin{realMax, realMax};
+    Vector2 boxMax{-realMax, -realMax};
+    Vector2 lower;
+    Vector2 upper;
     if (state.standalone) {  // a primitive of its own: its pose is the body's (common case)
       const std::uint32_t s = state.firstShape;
       auto& primitive = static_cast<Primitive&>(body);  // the body is its one primitive
       if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
       shapeMoved[s] = changed ? 1 : 0;
       if (!changed) continue;
-      updateShape(s, known);
-      updateBodyBox(index);
+      if (updateShape(s, known, lower, upper)) {
+        boxMin = {std::min(boxMin.x, lower.x), std::min(boxMin.y, lower.y)};
+        boxMax = {std::max(boxMax.x, upper.x), std::max(boxMax.y, upper.y)};
+      }
+      body.boxMin = boxMin;
+      body.boxMax = boxMax;
       continue;
     }
+    // Once a shape has moved the body box is rebuilt, from every shape in order: those
+    // before the first moved one are added then, the unmoved ones after it as they come.
+    // A body none of whose shapes moved keeps its box and reads no shape's geometry.
     bool anyMoved = changed;
     const std::uint32_t end = state.firstShape + state.shapeCount;
     for (std::uint32_t s = state.firstShape; s < end; ++s) {
@@ -160,12 +185,21 @@ void Simulator::updateGeometry() {
       const bool moved =
           changed || !sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha);
       shapeMoved[s] = moved ? 1 : 0;
-      if (!moved) continue;
-      primitive.followOwner();
-      updateShape(s, known);
+      if (!moved) {
+        if (anyMoved) addCachedBox(s, boxMin, boxMax);
+        continue;
+      }
+      if (!anyMoved)
+        for (std::uint32_t t = state.firstShape; t < s; ++t) addCachedBox(t, boxMin, boxMax);
       anyMoved = true;
+      primitive.followOwner();
+      if (!updateShape(s, known, lower, upper)) continue;
+      boxMin = {std::min(boxMin.x, lower.x), std::min(boxMin.y, lower.y)};
+      boxMax = {std::max(boxMax.x, upper.x), std::max(boxMax.y, upper.y)};
     }
-    if (anyMoved) updateBodyBox(index);
+    if (!anyMoved) continue;
+    body.boxMin = boxMin;
+    body.boxMax = boxMax;
   }
 }
 
