@@ -3,17 +3,19 @@
 # (each included when its library was found; this script installs nothing), then prints the
 # tables of bench/README.md.
 #
-#   bench/run_comparison.sh                 # the full suite, 3 repetitions, medians
+#   bench/run_comparison.sh                 # the full suite, 5 repetitions interleaved, medians
 #   bench/run_comparison.sh --quick         # every scene 10 to 20 times shorter
 #   bench/run_comparison.sh --benchmark_filter=pile    # any PeerBenchmarks option passes on
 #
-# Environment: BUILD_DIR (default build/bench), REPETITIONS (default 3), JOBS (default nproc).
+# Environment: BUILD_DIR (default build/bench), REPETITIONS (default 5), JOBS (default nproc).
+# The repetitions of all benchmarks are interleaved at random, so that a slow spell of a shared
+# machine spreads over every engine and scene instead of landing on one of them.
 # The JSON results are kept in $BUILD_DIR/peer_results.json.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${BUILD_DIR:-$root/build/bench}
-repetitions=${REPETITIONS:-3}
+repetitions=${REPETITIONS:-5}
 jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 
 # Release, benchmarks on; the examples provide Spherus (spherus and batch scenes); the tests
@@ -28,7 +30,8 @@ cmake --build "$build" -j "$jobs" --target PeerBenchmarks
 results=$build/peer_results.json
 echo "Running PeerBenchmarks ($repetitions repetitions; $(nproc) CPUs, load $(cut -d' ' -f1-3 /proc/loadavg))"
 "$build/bench/PeerBenchmarks" --benchmark_repetitions="$repetitions" \
-  --benchmark_report_aggregates_only=true --benchmark_out="$results" \
+  --benchmark_report_aggregates_only=true --benchmark_enable_random_interleaving=true \
+  --benchmark_out="$results" \
   --benchmark_out_format=json "$@"
 echo
 python3 "$root/bench/comparison_table.py" "$results"
