@@ -190,6 +190,18 @@ void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, std::vector
   }
 }
 
+void BroadPhase::sortByCell(std::uint32_t count, std::uint32_t cellCount) {
+  // Counting sort in index order, so each cell lists its boxes by increasing index.
+  cellStart_.assign(cellCount + 1, 0);
+  for (std::uint32_t i = 0; i < count; ++i)
+    if (cellOfBox_[i] != oversizedMark) ++cellStart_[cellOfBox_[i] + 1];
+  for (std::uint32_t c = 0; c < cellCount; ++c) cellStart_[c + 1] += cellStart_[c];
+  cellCursor_.assign(cellStart_.begin(), cellStart_.end() - 1);
+  sortedBoxes_.resize(cellStart_[cellCount]);
+  for (std::uint32_t i = 0; i < count; ++i)
+    if (cellOfBox_[i] != oversizedMark) sortedBoxes_[cellCursor_[cellOfBox_[i]]++] = i;
+}
+
 void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::int64_t lowX,
                                       std::int64_t lowY, std::int64_t columns, std::int64_t rows,
                                       std::vector<BoxPair>& pairs) {
@@ -199,17 +211,10 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
   const auto count = static_cast<std::uint32_t>(boxes.size());
   const auto cellCount = static_cast<std::uint32_t>(columns * rows);
   const auto stride = static_cast<std::uint32_t>(rows);
-  cellStart_.assign(cellCount + 1, 0);
-  for (std::uint32_t i = 0; i < count; ++i) {
-    if (cellOfBox_[i] == oversizedMark) continue;
-    cellOfBox_[i] = static_cast<std::uint32_t>((cellX_[i] - lowX) * rows + (cellY_[i] - lowY));
-    ++cellStart_[cellOfBox_[i] + 1];
-  }
-  for (std::uint32_t c = 0; c < cellCount; ++c) cellStart_[c + 1] += cellStart_[c];
-  cellCursor_.assign(cellStart_.begin(), cellStart_.end() - 1);
-  sortedBoxes_.resize(cellStart_[cellCount]);
   for (std::uint32_t i = 0; i < count; ++i)
-    if (cellOfBox_[i] != oversizedMark) sortedBoxes_[cellCursor_[cellOfBox_[i]]++] = i;
+    if (cellOfBox_[i] != oversizedMark)
+      cellOfBox_[i] = static_cast<std::uint32_t>((cellX_[i] - lowX) * rows + (cellY_[i] - lowY));
+  sortByCell(count, cellCount);
 
   // The same visiting order as the hashed grid: own cell (higher indices), then the cells
   // (x+1, y-1), (x+1, y), (x+1, y+1), then (x, y+1), each by increasing index.
@@ -236,19 +241,9 @@ void BroadPhase::findPairsInHashedGrid(std::span<const BoundingBox> boxes,
   const auto count = static_cast<std::uint32_t>(boxes.size());
   const std::uint32_t bucketCount = bucketCountFor(count);
   const std::uint32_t mask = bucketCount - 1;
-  cellStart_.assign(bucketCount + 1, 0);
-  for (std::uint32_t i = 0; i < count; ++i) {
-    if (cellOfBox_[i] == oversizedMark) continue;
-    cellOfBox_[i] = hashCell(cellX_[i], cellY_[i], mask);
-    ++cellStart_[cellOfBox_[i] + 1];
-  }
-  for (std::uint32_t b = 0; b < bucketCount; ++b) cellStart_[b + 1] += cellStart_[b];
-
-  // Counting sort in index order, so each bucket lists its boxes by increasing index.
-  cellCursor_.assign(cellStart_.begin(), cellStart_.end() - 1);
-  sortedBoxes_.resize(cellStart_[bucketCount]);
   for (std::uint32_t i = 0; i < count; ++i)
-    if (cellOfBox_[i] != oversizedMark) sortedBoxes_[cellCursor_[cellOfBox_[i]]++] = i;
+    if (cellOfBox_[i] != oversizedMark) cellOfBox_[i] = hashCell(cellX_[i], cellY_[i], mask);
+  sortByCell(count, bucketCount);
 
   // Regular pairs. A box can only overlap boxes whose centres lie in the 3 x 3 cells around
   // its own; visiting its own cell (higher indices only) and the four "forward" cells (all

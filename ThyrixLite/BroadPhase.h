@@ -64,6 +64,9 @@ class BroadPhase {
                             std::int64_t lowY, std::int64_t columns, std::int64_t rows,
                             std::vector<BoxPair>& pairs);
   void findPairsInHashedGrid(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
+  /// Groups the regular boxes by cellOfBox_ (cells 0 to cellCount - 1) into sortedBoxes_,
+  /// with cellStart_ marking each cell's range.
+  void sortByCell(std::uint32_t count, std::uint32_t cellCount);
   void reserveFor(std::uint32_t count);
 
   // Few boxes: bit j of overlaps_[i] is set when boxes i < j overlap (last call's result);
