@@ -1,10 +1,9 @@
 #include "IunctusSimulator.h"
 
-#include <ThyrixLite/Border.h>
+#include "ArenaSetup.h"
+
 #include <ThyrixLite/InvalidArgument.h>
 #include <Tools/MTRandom.h>
-
-#include <algorithm>
 
 namespace thyrix {
 
@@ -16,10 +15,7 @@ IunctusSimulator::IunctusSimulator(const Options& options, std::unique_ptr<Contr
   // The agent sits 2 m from the left wall and its open limb reaches 2.85 m up: the arena must
   // hold that and the first object ahead.
   if (!(size >= 6)) throw InvalidArgument("IunctusSimulator.size", "must be at least 6 m");
-  registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
-  registerObject(std::make_unique<Border>(Vector2{0, size}, Vector2{0, -1}));
-  registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{1, 0}));
-  registerObject(std::make_unique<Border>(Vector2{size, 0}, Vector2{-1, 0}));
+  addArenaWalls(*this, size);
   iunctus_ = &registerObject(std::make_unique<Iunctus>(std::move(controller)));
   const Vector2 start{2, size / 2 - 1};
   iunctus_->place(start, 0);
@@ -31,18 +27,9 @@ IunctusSimulator::IunctusSimulator(const Options& options, std::unique_ptr<Contr
   const real reach = iunctus_->parameters().baseRadius + 3 * iunctus_->parameters().linkLength;
   std::vector<Vector2> placed;
   if (options.objects > 0) placed.push_back(start + Vector2{real(1.5), 0});
-  int attempts = 0;
-  while (static_cast<int>(placed.size()) < options.objects) {
-    if (++attempts > 1000 * (options.objects + 1))
-      throw InvalidArgument("IunctusSimulator.objects", "do not fit in the arena");
-    const Vector2 p{static_cast<real>(random.uniform(2 * r, size - 2 * r)),
-                    static_cast<real>(random.uniform(2 * r, size - 2 * r))};
-    if (distance(p, start) < reach + r) continue;
-    if (std::any_of(placed.begin(), placed.end(),
-                    [&](Vector2 q) { return distance(p, q) < 3 * r; }))
-      continue;
-    placed.push_back(p);
-  }
+  scatterPoints(
+      random, placed, options.objects, r, size,
+      [&](Vector2 p) { return distance(p, start) < reach + r; }, "IunctusSimulator.objects");
   for (const Vector2 p : placed) {
     auto& circle = registerObject(std::make_unique<Circle>(r, real(1)));
     circle.r = p;

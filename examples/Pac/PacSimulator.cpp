@@ -1,11 +1,11 @@
 #include "PacSimulator.h"
 
-#include <ThyrixLite/Border.h>
+#include "ArenaSetup.h"
+
 #include <ThyrixLite/InvalidArgument.h>
 #include <Tools/MTRandom.h>
 #include <Tools/MathTools.h>
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -20,10 +20,7 @@ PacSimulator::PacSimulator(const Options& options, std::unique_ptr<Controller> f
   if (!(size >= 6 * reach) || !std::isfinite(size))
     throw InvalidArgument("PacSimulator.size", "must leave room for the two Pacs (at least " +
                                                    std::to_string(6 * reach) + ")");
-  registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
-  registerObject(std::make_unique<Border>(Vector2{0, size}, Vector2{0, -1}));
-  registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{1, 0}));
-  registerObject(std::make_unique<Border>(Vector2{size, 0}, Vector2{-1, 0}));
+  addArenaWalls(*this, size);
   std::unique_ptr<Controller> controllers[2] = {std::move(first), std::move(second)};
   const Vector2 homes[2] = {{size / 4, size / 2}, {3 * size / 4, size / 2}};
   const real headings[2] = {0, pi<real>};
@@ -39,18 +36,12 @@ PacSimulator::PacSimulator(const Options& options, std::unique_ptr<Controller> f
   const real r = options.foodRadius;
   const real clearance = real(1.5) * reach + 2 * r;
   std::vector<Vector2> placed;
-  int attempts = 0;
-  while (static_cast<int>(placed.size()) < options.food) {
-    if (++attempts > 1000 * (options.food + 1))
-      throw InvalidArgument("PacSimulator.food", "do not fit in the arena");
-    const Vector2 p{static_cast<real>(random.uniform(2 * r, size - 2 * r)),
-                    static_cast<real>(random.uniform(2 * r, size - 2 * r))};
-    if (distance(p, homes[0]) < clearance || distance(p, homes[1]) < clearance) continue;
-    if (std::any_of(placed.begin(), placed.end(),
-                    [&](Vector2 q) { return distance(p, q) < 3 * r; }))
-      continue;
-    placed.push_back(p);
-  }
+  scatterPoints(
+      random, placed, options.food, r, size,
+      [&](Vector2 p) {
+        return distance(p, homes[0]) < clearance || distance(p, homes[1]) < clearance;
+      },
+      "PacSimulator.food");
   for (const Vector2 p : placed) {
     auto& circle = registerObject(std::make_unique<Circle>(r, options.foodMass));
     circle.r = p;

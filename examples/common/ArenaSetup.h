@@ -1,0 +1,41 @@
+#pragma once
+/// @file ArenaSetup.h
+/// @brief What the example simulators' arenas share: four walls, and objects scattered at
+/// random without overlap.
+
+#include <ThyrixLite/InvalidArgument.h>
+#include <ThyrixLite/Simulator.h>
+#include <Tools/MTRandom.h>
+
+#include <algorithm>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace thyrix {
+
+/// Registers four borders enclosing the square [0, size] x [0, size], normals inward.
+void addArenaWalls(Simulator& simulator, real size);
+
+/// Rejection sampling in the square arena of @p size: appends to @p placed points for circles
+/// of radius @p radius until it holds @p count, each at least 2 radius from the walls, 3 radius
+/// (a gap of one radius) from every point before it, and where @p keptOut(p) is false.
+/// @throws InvalidArgument naming @p field when 1000 (count + 1) draws did not fit them.
+template <class KeptOut>
+void scatterPoints(MTRandom& random, std::vector<Vector2>& placed, int count, real radius,
+                   real size, KeptOut&& keptOut, std::string_view field) {
+  int attempts = 0;
+  while (static_cast<int>(placed.size()) < count) {
+    if (++attempts > 1000 * (count + 1))
+      throw InvalidArgument(std::string(field), "do not fit in the arena");
+    const Vector2 p{static_cast<real>(random.uniform(2 * radius, size - 2 * radius)),
+                    static_cast<real>(random.uniform(2 * radius, size - 2 * radius))};
+    if (keptOut(p)) continue;
+    if (std::any_of(placed.begin(), placed.end(),
+                    [&](Vector2 q) { return distance(p, q) < 3 * radius; }))
+      continue;
+    placed.push_back(p);
+  }
+}
+
+}  // namespace thyrix
