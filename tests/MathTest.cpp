@@ -16,30 +16,15 @@
 #include <numbers>
 
 #include "TestTolerances.h"
+#include "support/ExpectNear.h"
 
 namespace thyrix {
 namespace {
 
+using test::expectNear;
 using test::tight;
 
 constexpr real kPi = pi<real>;
-
-void expectNear(Vector2 actual, Vector2 expected, real tolerance) {
-  EXPECT_NEAR(actual.x, expected.x, tolerance);
-  EXPECT_NEAR(actual.y, expected.y, tolerance);
-}
-
-void expectNear(const Vector3& actual, const Vector3& expected, real tolerance) {
-  EXPECT_NEAR(actual.x, expected.x, tolerance);
-  EXPECT_NEAR(actual.y, expected.y, tolerance);
-  EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
-
-void expectNear(const Matrix3& actual, const Matrix3& expected, real tolerance) {
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      EXPECT_NEAR(actual(i, j), expected(i, j), tolerance) << "entry (" << i << ", " << j << ")";
-}
 
 /// Uniform in [low, high) as a real.
 real draw(MTRandom& random, double low, double high) {

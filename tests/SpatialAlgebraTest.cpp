@@ -4,6 +4,7 @@
 // against the parallel-axis theorem.
 
 #include "TestTolerances.h"
+#include "support/ExpectNear.h"
 
 #include <ThyrixLite/Matrix3.h>
 #include <ThyrixLite/SymmetricMatrix3.h>
@@ -17,6 +18,7 @@
 namespace thyrix {
 namespace {
 
+using test::expectNear;
 using test::tight;
 
 real draw(MTRandom& random, double low, double high) {
@@ -25,18 +27,6 @@ real draw(MTRandom& random, double low, double high) {
 
 Vector3 randomVector(MTRandom& random) {
   return {draw(random, -2, 2), draw(random, -2, 2), draw(random, -2, 2)};
-}
-
-void expectNear(const Vector3& actual, const Vector3& expected, real tolerance) {
-  EXPECT_NEAR(actual.x, expected.x, tolerance);
-  EXPECT_NEAR(actual.y, expected.y, tolerance);
-  EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
-
-void expectNear(const Matrix3& actual, const Matrix3& expected, real tolerance) {
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      EXPECT_NEAR(actual(i, j), expected(i, j), tolerance) << "entry (" << i << ", " << j << ")";
 }
 
 // Tolerance for a few operations on values of order 10.
