@@ -53,7 +53,7 @@ class GaussSeidelSolver {
     Vector2 normal;
     real inverseMassA;
     real inverseMassB;
-    real target;         // c
+    real scaledTarget;   // c * inverseScaled
     real response;       // A_kk
     real inverseScaled;  // relaxation / A_kk
   };
@@ -75,6 +75,8 @@ class GaussSeidelSolver {
     real squaredNorm = 0;    // the sum of the squared changes of the forces
   };
 
+  /// Reorders the gathered rows so that consecutive rows rarely share a body.
+  void interleave();
   void gather(std::span<const std::uint32_t> island, std::span<const ContactConstraint> rows,
               std::span<const SolverBody> bodies, real relaxation);
   /// One sweep over the rows, forward or backward; records each row's change in changes_.
@@ -96,8 +98,12 @@ class GaussSeidelSolver {
   bool turningIsland_ = false;
   std::vector<Body> bodies_;
   std::vector<real> forces_;
-  std::vector<real> changes_;              // each force's change in the last sweep
-  std::vector<real> direction_;            // the conjugate direction p
+  std::vector<real> changes_;         // each force's change in the last sweep
+  std::vector<real> direction_;       // the conjugate direction p
+  std::vector<std::uint32_t> order_;  // local row -> position in the island
+  std::vector<Row> spareRows_;        // the buffers interleave() permutes into
+  std::vector<real> spareForces_;
+  std::vector<Turning> spareTurning_;
   std::vector<std::uint32_t> globalBody_;  // local body -> index in the caller's bodies, or none
   std::vector<std::uint32_t> localBody_;   // caller's body -> local index, or none
 };
