@@ -6,18 +6,11 @@
 namespace thyrix {
 namespace {
 
-/// Below this fraction of the shapes' size two centres or axes count as coincident.
-constexpr real relativeTolerance = std::is_same_v<real, float> ? real(1e-5) : real(1e-10);
 /// Axes whose angle has a sine below this are treated as parallel (two-point contact).
 constexpr real parallelSine = real(0.02);
 
-Manifold single(Vector2 normal, Vector2 surfaceA, Vector2 surfaceB, std::uint32_t feature = 0) {
-  Manifold m;
-  m.normal = normal;
-  m.count = 1;
-  m.points[0] = {(surfaceA + surfaceB) * real(0.5), dot(surfaceA - surfaceB, normal), feature};
-  return m;
-}
+using narrow_phase::relativeTolerance;
+using narrow_phase::single;
 
 /// The endpoint of segment @p a - @p b that reaches furthest along @p direction.
 Vector2 support(Vector2 a, Vector2 b, Vector2 direction) {
@@ -61,13 +54,6 @@ Vector2 closestPointOnSegment(Vector2 a, Vector2 b, Vector2 p) {
   return a + d * clamp(dot(p - a, d) / lengthSquared, real(0), real(1));
 }
 
-Manifold collideHalfPlaneCircle(Vector2 point, Vector2 normal, Vector2 centre, real radius,
-                                real margin) {
-  const real distance = dot(centre - point, normal);
-  if (distance - radius >= margin) return {};
-  return single(normal, centre - normal * distance, centre - normal * radius);
-}
-
 Manifold collideHalfPlaneCapsule(Vector2 point, Vector2 normal, Vector2 b0, Vector2 b1, real radius,
                                  real margin) {
   Manifold m;
@@ -81,15 +67,6 @@ Manifold collideHalfPlaneCapsule(Vector2 point, Vector2 normal, Vector2 b0, Vect
     m.points[m.count++] = {(surfaceA + surfaceB) * real(0.5), radius - distance, end};
   }
   return m;
-}
-
-Manifold collideCircles(Vector2 centreA, real radiusA, Vector2 centreB, real radiusB, real margin) {
-  const Vector2 d = centreB - centreA;
-  const real distance = d.length();
-  if (distance - radiusA - radiusB >= margin) return {};
-  const Vector2 n =
-      distance > relativeTolerance * (radiusA + radiusB) ? d / distance : Vector2{1, 0};
-  return single(n, centreA + n * radiusA, centreB - n * radiusB);
 }
 
 Manifold collideCircleCapsule(Vector2 centre, real radiusA, Vector2 b0, Vector2 b1, real radiusB,

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <type_traits>
 
 namespace thyrix {
 
@@ -30,15 +31,17 @@ struct Manifold {
 };
 
 /// A border (half-plane through @p point with unit @p normal into the free side) and a circle.
-Manifold collideHalfPlaneCircle(Vector2 point, Vector2 normal, Vector2 centre, real radius,
-                                real margin);
+/// (Inline, as collideCircles: a pile's steps call them thousands of times.)
+inline Manifold collideHalfPlaneCircle(Vector2 point, Vector2 normal, Vector2 centre, real radius,
+                                       real margin);
 
 /// A border and a capsule with end-cap centres @p b0, @p b1: one point per end within reach.
 Manifold collideHalfPlaneCapsule(Vector2 point, Vector2 normal, Vector2 b0, Vector2 b1, real radius,
                                  real margin);
 
 /// Two circles. Coincident centres get the normal +x.
-Manifold collideCircles(Vector2 centreA, real radiusA, Vector2 centreB, real radiusB, real margin);
+inline Manifold collideCircles(Vector2 centreA, real radiusA, Vector2 centreB, real radiusB,
+                               real margin);
 
 /// A circle (A) and a capsule (B).
 Manifold collideCircleCapsule(Vector2 centre, real radiusA, Vector2 b0, Vector2 b1, real radiusB,
@@ -51,5 +54,40 @@ Manifold collideCapsules(Vector2 a0, Vector2 a1, real radiusA, Vector2 b0, Vecto
 
 /// The point of segment @p a - @p b closest to @p p.
 Vector2 closestPointOnSegment(Vector2 a, Vector2 b, Vector2 p);
+
+namespace narrow_phase {
+
+/// Below this fraction of the shapes' size two centres or axes count as coincident.
+inline constexpr real relativeTolerance = std::is_same_v<real, float> ? real(1e-5) : real(1e-10);
+
+/// A one-point manifold between the surface points @p surfaceA and @p surfaceB.
+inline Manifold single(Vector2 normal, Vector2 surfaceA, Vector2 surfaceB,
+                       std::uint32_t feature = 0) {
+  Manifold m;
+  m.normal = normal;
+  m.count = 1;
+  m.points[0] = {(surfaceA + surfaceB) * real(0.5), dot(surfaceA - surfaceB, normal), feature};
+  return m;
+}
+
+}  // namespace narrow_phase
+
+inline Manifold collideHalfPlaneCircle(Vector2 point, Vector2 normal, Vector2 centre, real radius,
+                                       real margin) {
+  const real distance = dot(centre - point, normal);
+  if (distance - radius >= margin) return {};
+  return narrow_phase::single(normal, centre - normal * distance, centre - normal * radius);
+}
+
+inline Manifold collideCircles(Vector2 centreA, real radiusA, Vector2 centreB, real radiusB,
+                               real margin) {
+  const Vector2 d = centreB - centreA;
+  const real distance = d.length();
+  if (distance - radiusA - radiusB >= margin) return {};
+  const Vector2 n = distance > narrow_phase::relativeTolerance * (radiusA + radiusB)
+                        ? d / distance
+                        : Vector2{1, 0};
+  return narrow_phase::single(n, centreA + n * radiusA, centreB - n * radiusB);
+}
 
 }  // namespace thyrix
