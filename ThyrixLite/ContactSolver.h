@@ -50,8 +50,14 @@ struct ContactSolverSettings {
   /// error e (m/s) left in a contact then gives a steady overlap of e dt / penetrationCorrection,
   /// the least for 1; smaller values push apart more softly.
   real penetrationCorrection = 1;
-  /// Contacts are created while the gap is below this fraction of the smaller shape radius.
-  real speculativeFraction = real(0.25);
+  /// Contacts are created while the gap is below a margin: this fraction of the smaller shape
+  /// radius, plus what the two shapes travelled in the last step (times speculativeTravel).
+  real speculativeFraction = real(0.05);
+  /// How many times its last step's travel (the largest displacement of a point of its axis,
+  /// as |dx| + |dy|, at most its radius) a shape's margin grows by: a shape that keeps its
+  /// speed then sees every contact it can reach in the step, whatever the speed, while a
+  /// crowd at rest keeps only the narrow margin of speculativeFraction (fewer contacts).
+  real speculativeTravel = 1;
 };
 
 /// A body as the solvers see it: the velocity being solved for and the inverse quasistatic mass.

@@ -135,7 +135,8 @@ class Simulator : public World {
     Vector2 p0;
     Vector2 p1;
     real radius;
-    real margin;
+    real margin;      // speculativeFraction * radius
+    real travel = 0;  // speculativeTravel * the last step's displacement (0 at rest)
   };
 
   /// What detection remembers of a body, to notice that it moved or changed its filters.
@@ -208,6 +209,7 @@ class Simulator : public World {
   std::vector<std::uint32_t> previousStart_;         // previous contacts by shape A: offsets
   std::vector<std::uint32_t> previousOrder_;         // previous contacts by shape A: indices
   real geometryFraction_ = 0;      // speculativeFraction the cached margins were computed with
+  real geometryTravel_ = 0;        // speculativeTravel the cached travels were computed with
   bool contactsComplete_ = false;  // `contacts` holds exactly one detection's contacts
   bool previousValid_ = false;     // previousContacts_ is the last detection's, complete
   bool previousIndexed_ = false;   // previousStart_ and previousOrder_ are up to date

@@ -74,6 +74,8 @@ inline bool Simulator::updateShape(std::uint32_t s, bool poseKnown, Vector2& low
   const ShapeType type = shapes_[s].type;
   const Vector2 r = primitive.r;
   const real alpha = primitive.alpha;
+  const Vector2 last0 = g.p0;
+  const Vector2 last1 = g.p1;
   switch (type) {
     case ShapeType::HalfPlane:
       g.p0 = r;
@@ -104,8 +106,20 @@ inline bool Simulator::updateShape(std::uint32_t s, bool poseKnown, Vector2& low
   upper = most + Vector2{g.radius, g.radius};
   const std::uint32_t slot = gridSlot_[s];
   gridMovedBits_[slot / 64] |= std::uint64_t{1} << (slot % 64);
+  // How far the shape went in the last step, a bound on how far it goes in this one if it
+  // keeps its speed: |dx| + |dy| of its axis's ends (no square root; at most 1.42 times the
+  // distance), capped at the radius (a shape moved by hand did not travel).
+  g.travel = 0;
+  if (poseKnown) {
+    const Vector2 d0 = g.p0 - last0;
+    const Vector2 d1 = g.p1 - last1;
+    const real displacement =
+        std::max(std::abs(d0.x) + std::abs(d0.y), std::abs(d1.x) + std::abs(d1.y));
+    g.travel = std::min(geometryTravel_ * displacement, g.radius);
+  }
   // The shape's own box (not the body's), widened by its speculative margin.
-  const Vector2 reach{g.radius + g.margin, g.radius + g.margin};
+  const real widening = g.radius + g.margin + g.travel;
+  const Vector2 reach{widening, widening};
   gridBoxes_[slot] = {least - reach, most + reach};
   return true;
 }
@@ -113,8 +127,10 @@ inline bool Simulator::updateShape(std::uint32_t s, bool poseKnown, Vector2& low
 void Simulator::updateGeometry() {
   // A new margin changes every shape's geometry; without rest skipping nothing is kept.
   const bool newFraction = !sameBits(settings_.speculativeFraction, geometryFraction_);
-  const bool everything = !restSkipping || newFraction;
+  const bool everything =
+      !restSkipping || newFraction || !sameBits(settings_.speculativeTravel, geometryTravel_);
   geometryFraction_ = settings_.speculativeFraction;
+  geometryTravel_ = settings_.speculativeTravel;
   if (newFraction)  // the margins are kept, and depend on nothing else (radii are fixed)
     for (ShapeGeometry& g : geometry_) g.margin = geometryFraction_ * g.radius;
   sensingPrimitives_.clear();
@@ -134,7 +150,9 @@ void Simulator::updateGeometry() {
         (bitsOf(body.r.x) ^ bitsOf(state.r.x)) | (bitsOf(body.r.y) ^ bitsOf(state.r.y)) |
         (bitsOf(body.alpha) ^ bitsOf(state.alpha)) | (body.collisionGroup ^ state.group) |
         (std::uint32_t{body.fixed} ^ state.fixed);
-    const bool changed = everything || difference != 0;
+    // A shape that travelled in the last step has a wider margin, to be narrowed when it stops.
+    const bool changed = everything || difference != 0 ||
+                         (state.standalone && geometry_[state.firstShape].travel != 0);
     const bool known = state.fixed != BodyState::unknown;
     if (changed) {
       // The filters copied to the shapes depend on `fixed` and `collisionGroup` only (and on
@@ -182,8 +200,8 @@ void Simulator::updateGeometry() {
       Primitive& primitive = *shapes_[s].primitive;
       if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
       const ShapePose& pose = shapePoses_[s];
-      const bool moved =
-          changed || !sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha);
+      const bool moved = changed || !sameBits(primitive.r, pose.r) ||
+                         !sameBits(primitive.alpha, pose.alpha) || geometry_[s].travel != 0;
       shapeMoved[s] = moved ? 1 : 0;
       if (!moved) {
         if (anyMoved) addCachedBox(s, boxMin, boxMax);
@@ -316,7 +334,9 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
     return;
   const ShapeGeometry& ga = geometry_[shapeA];
   const ShapeGeometry& gb = geometry_[shapeB];
-  const real margin = a.type == ShapeType::HalfPlane ? gb.margin : std::min(ga.margin, gb.margin);
+  const real margin =
+      (a.type == ShapeType::HalfPlane ? gb.margin : std::min(ga.margin, gb.margin)) + ga.travel +
+      gb.travel;
 
   const auto append = [&](const Manifold& manifold) {
     for (int i = 0; i < manifold.count; ++i) {

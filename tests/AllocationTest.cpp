@@ -30,7 +30,8 @@ TEST_P(AllocationTest, PileOf2000CirclesStepsWithoutAllocating) {
     scenes::push(circles, {0, -1});
     simulator.advanceTime();
   }
-  ASSERT_GT(simulator.contacts.size(), 1500u) << "the pile should be in contact";
+  // (Most of the pile's contacts touch: at rest the speculative margin is narrow.)
+  ASSERT_GT(simulator.contacts.size(), 1200u) << "the pile should be in contact";
   const long before = test::allocationCount();
   for (int step = 0; step < 100; ++step) {
     scenes::push(circles, {0, -1});

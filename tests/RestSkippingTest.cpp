@@ -138,6 +138,12 @@ void runSideBySide(int extra) {
           simulator.solverSettings().speculativeFraction =
               step % 600 == 250 ? real(0.4) : real(0.25);
           break;
+        case 260:  // margins that follow travel more, or not at all
+          simulator.solverSettings().speculativeTravel = step % 600 == 260 ? real(2) : real(0);
+          break;
+        case 280:
+          simulator.solverSettings().speculativeTravel = 1;
+          break;
         default:
           break;
       }
