@@ -16,32 +16,27 @@ std::size_t tableSize(std::size_t count) {
 }
 }  // namespace
 
-void ContactForceCache::reserve(std::size_t count) {
-  keys_.reserve(tableSize(count));
-  forces_.reserve(tableSize(count));
-}
+void ContactForceCache::reserve(std::size_t count) { table_.reserve(tableSize(count)); }
 
 void ContactForceCache::reset(std::size_t count) {
   const std::size_t capacity = tableSize(count);
-  keys_.assign(capacity, empty);
-  forces_.resize(capacity);
+  table_.assign(capacity, Entry{empty, 0});
   mask_ = capacity - 1;
   entries_ = 0;
 }
 
 void ContactForceCache::insert(std::uint64_t key, real force) {
   std::size_t i = slot(key);
-  while (keys_[i] != empty) i = (i + 1) & mask_;
-  keys_[i] = key;
-  forces_[i] = force;
+  while (table_[i].key != empty) i = (i + 1) & mask_;
+  table_[i] = {key, force};
   ++entries_;
 }
 
 real ContactForceCache::find(std::uint64_t key) const {
-  if (keys_.empty()) return 0;
+  if (table_.empty()) return 0;
   for (std::size_t i = slot(key);; i = (i + 1) & mask_) {
-    if (keys_[i] == key) return forces_[i];
-    if (keys_[i] == empty) return 0;
+    if (table_[i].key == key) return table_[i].force;
+    if (table_[i].key == empty) return 0;
   }
 }
 

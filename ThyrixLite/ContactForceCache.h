@@ -38,8 +38,12 @@ class ContactForceCache {
   [[nodiscard]] std::size_t slot(std::uint64_t key) const;
 
   static constexpr std::uint64_t empty = ~std::uint64_t{0};
-  std::vector<std::uint64_t> keys_;
-  std::vector<real> forces_;
+  /// Key and force side by side: a lookup touches one cache line, not two.
+  struct Entry {
+    std::uint64_t key;
+    real force;
+  };
+  std::vector<Entry> table_;
   std::size_t mask_ = 0;
   std::size_t entries_ = 0;
 };

@@ -1,7 +1,6 @@
 #include <ThyrixLite/GaussSeidelSolver.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 namespace thyrix {
@@ -58,38 +57,44 @@ int GaussSeidelSolver::solve(std::span<const std::uint32_t> island,
 void GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
                                std::span<const ContactConstraint> rows,
                                std::span<const SolverBody> bodies, real relaxation) {
+  const std::size_t n = island.size();
   if (localBody_.size() < bodies.size()) localBody_.resize(bodies.size(), noBody);
-  bodies_.clear();
-  globalBody_.clear();
-  const auto local = [&](std::uint32_t body) {
-    const SolverBody& b = bodies[body];
+  // Each row brings at most two bodies: the local arrays are sized once, then filled through
+  // plain pointers (one pass, no growth checks).
+  if (bodies_.size() < 2 * n) {
+    bodies_.resize(2 * n);
+    globalBody_.resize(2 * n);
+  }
+  rows_.resize(n);
+  turning_.resize(n);
+  forces_.resize(n);
+  changes_.resize(n);
+  Body* const local = bodies_.data();
+  std::uint32_t* const global = globalBody_.data();
+  std::uint32_t* const localOf = localBody_.data();
+  std::uint32_t used = 0;
+  const auto localIndex = [&](std::uint32_t body, const SolverBody& b) {
     // A body that cannot move gets a private copy in each row: rows that share only a wall
     // then do not wait on each other's (null) updates of its velocity.
     if (b.inverseMass == 0 && b.inverseInertia == 0) {
-      bodies_.push_back({b.v, b.omega});
-      globalBody_.push_back(noBody);
-      return static_cast<std::uint32_t>(bodies_.size() - 1);
+      local[used] = {b.v, b.omega};
+      global[used] = noBody;
+      return used++;
     }
-    std::uint32_t& index = localBody_[body];
+    std::uint32_t index = localOf[body];
     if (index == noBody) {
-      index = static_cast<std::uint32_t>(bodies_.size());
-      bodies_.push_back({b.v, b.omega});
-      globalBody_.push_back(body);
+      index = used++;
+      localOf[body] = index;
+      local[index] = {b.v, b.omega};
+      global[index] = body;
     }
     return index;
   };
-  const std::size_t n = island.size();
-  rows_.resize(n);
-  forces_.resize(n);
-  changes_.resize(n);
   // A lever arm matters if its body turns or can be turned (a fixed wall's does not).
-  const auto turns = [&](real arm, const SolverBody& body) {
+  const auto turns = [](real arm, const SolverBody& body) {
     return arm != 0 && (body.inverseInertia != 0 || body.omega != 0);
   };
-  turningIsland_ = std::any_of(island.begin(), island.end(), [&](std::uint32_t k) {
-    return turns(rows[k].armA, bodies[rows[k].a]) || turns(rows[k].armB, bodies[rows[k].b]);
-  });
-  turning_.resize(turningIsland_ ? n : 0);
+  bool turning = false;
   for (std::size_t p = 0; p < n; ++p) {
     const ContactConstraint& c = rows[island[p]];
     const SolverBody& bodyA = bodies[c.a];
@@ -97,50 +102,47 @@ void GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
     const real response = c.selfResponse(bodyA, bodyB);
     // A row nothing can move along takes no force (its zero diagonal would poison the island).
     const real inverseScaled = response > 0 ? relaxation / response : 0;
-    rows_[p] = {local(c.a),        local(c.b),        c.normal,
-                bodyA.inverseMass, bodyB.inverseMass, c.target * inverseScaled,
-                response,          inverseScaled};
-    if (turningIsland_)
-      turning_[p] = {c.armA, c.armB, -c.armA * bodyA.inverseInertia, c.armB * bodyB.inverseInertia};
+    const std::uint32_t a = localIndex(c.a, bodyA);
+    const std::uint32_t b = localIndex(c.b, bodyB);
+    rows_[p] = {a,
+                b,
+                c.normal,
+                bodyA.inverseMass,
+                bodyB.inverseMass,
+                c.target * inverseScaled,
+                response,
+                inverseScaled};
+    // Kept for every row, read only if one of them turns.
+    turning_[p] = {c.armA, c.armB, -c.armA * bodyA.inverseInertia, c.armB * bodyB.inverseInertia};
+    turning = turning || turns(c.armA, bodyA) || turns(c.armB, bodyB);
     forces_[p] = c.force;
   }
+  turningIsland_ = turning;
+  bodyCount_ = used;
   interleave();
 }
 
 void GaussSeidelSolver::interleave() {
   // Rows come in detection order, where a body's contacts follow one another; then every row
-  // waits for the previous one's velocity update (a sweep is latency-bound). Each row is
-  // instead taken from the next few in order, the first that shares no body with the row
-  // before it: the order stays nearly the same (and so does the convergence), while
-  // consecutive rows can overlap in the processor. Fixed bodies have a copy per row and never
-  // conflict. Measured on a 1000-circle pile: a sweep 20% faster.
-  constexpr std::size_t window = 4;
+  // waits for the previous one's velocity update (a sweep is latency-bound). Within each block
+  // of 16 rows, the two halves are taken alternately (0, 8, 1, 9, ...): consecutive rows are
+  // then mostly of different bodies and overlap in the processor, while the order stays
+  // nearly the same, and so does the convergence. A fixed pattern rather than a search for
+  // conflict-free rows: no unpredictable branch. Measured on piles of 1000 to 10000 circles:
+  // a sweep about 25% faster, penetration as before.
+  constexpr std::size_t half = 8;
+  constexpr std::size_t block = 2 * half;
   const std::size_t n = rows_.size();
   order_.resize(n);
-  std::array<std::uint32_t, window> pending{};
-  std::size_t filled = 0;
-  std::uint32_t next = 0;
-  std::uint32_t lastA = noBody;
-  std::uint32_t lastB = noBody;
-  for (std::size_t k = 0; k < n; ++k) {
-    while (filled < window && next < n) pending[filled++] = next++;
-    std::size_t pick = 0;
-    for (std::size_t w = 0; w < filled; ++w) {
-      const Row& row = rows_[pending[w]];
-      if (row.a != lastA && row.a != lastB && row.b != lastA && row.b != lastB) {
-        pick = w;
-        break;
-      }
+  const std::size_t whole = n / block * block;
+  std::size_t next = 0;
+  for (std::size_t start = 0; start < whole; start += block) {
+    for (std::size_t j = 0; j < half; ++j) {
+      order_[next++] = static_cast<std::uint32_t>(start + j);
+      order_[next++] = static_cast<std::uint32_t>(start + half + j);
     }
-    const std::uint32_t p = pending[pick];
-    std::copy(pending.begin() + static_cast<std::ptrdiff_t>(pick + 1),
-              pending.begin() + static_cast<std::ptrdiff_t>(filled),
-              pending.begin() + static_cast<std::ptrdiff_t>(pick));
-    --filled;
-    order_[k] = p;
-    lastA = rows_[p].a;
-    lastB = rows_[p].b;
   }
+  for (std::size_t p = whole; p < n; ++p) order_[next++] = static_cast<std::uint32_t>(p);
   const auto permute = [this](auto& values, auto& spare) {
     spare.resize(values.size());
     for (std::size_t k = 0; k < values.size(); ++k) spare[k] = values[order_[k]];
@@ -227,7 +229,7 @@ void GaussSeidelSolver::conjugateStep(real beta) {
 void GaussSeidelSolver::scatter(std::span<const std::uint32_t> island,
                                 std::span<ContactConstraint> rows, std::span<SolverBody> bodies) {
   for (std::size_t p = 0; p < island.size(); ++p) rows[island[order_[p]]].force = forces_[p];
-  for (std::size_t l = 0; l < bodies_.size(); ++l) {
+  for (std::size_t l = 0; l < bodyCount_; ++l) {
     const std::uint32_t body = globalBody_[l];
     if (body == noBody) continue;  // a fixed body's copy
     bodies[body].v = bodies_[l].v;

@@ -94,9 +94,10 @@ class GaussSeidelSolver {
                std::span<SolverBody> bodies);
 
   std::vector<Row> rows_;
-  std::vector<Turning> turning_;  // filled only when a row of the island has a lever arm
+  std::vector<Turning> turning_;  // read only when a row of the island has a lever arm
   bool turningIsland_ = false;
-  std::vector<Body> bodies_;
+  std::vector<Body> bodies_;  // the island's bodies: the first bodyCount_
+  std::size_t bodyCount_ = 0;
   std::vector<real> forces_;
   std::vector<real> changes_;         // each force's change in the last sweep
   std::vector<real> direction_;       // the conjugate direction p
