@@ -52,7 +52,7 @@ struct ContactSolverSettings {
   real penetrationCorrection = 1;
   /// Contacts are created while the gap is below a margin: this fraction of the smaller shape
   /// radius, plus what the two shapes travelled in the last step (times speculativeTravel).
-  real speculativeFraction = real(0.05);
+  real speculativeFraction = real(0.1);
   /// How many times its last step's travel (the largest displacement of a point of its axis,
   /// as |dx| + |dy|, at most its radius) a shape's margin grows by: a shape that keeps its
   /// speed then sees every contact it can reach in the step, whatever the speed, while a

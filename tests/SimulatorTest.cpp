@@ -182,7 +182,7 @@ TEST_P(SimulatorTest, AFastBodyIsStoppedAtTheSurfaceByItsTravelMargin) {
   // Its margin grows by what it travelled in the last step, so the floor's contact is seen a
   // step before it would be crossed: no overlap at any step.
   EXPECT_LT(overlapOfFastCircle(GetParam(), 1), test::isFloat ? real(1e-4) : real(1e-9));
-  // With the narrow margin alone (5% of the radius) it sinks in by 17% of its radius first.
+  // With the narrow margin alone (10% of the radius) it sinks in by 17% of its radius first.
   EXPECT_GT(overlapOfFastCircle(GetParam(), 0), real(0.015));
 }
 
