@@ -293,7 +293,11 @@ TEST(BaraffSolver, ContradictoryTargetsFallBackWithoutExplosion) {
   circle.r = {0, real(0.45)};
   for (int step = 0; step < 100; ++step) simulator.advanceTime();
   EXPECT_TRUE(std::isfinite(circle.r.y));
-  EXPECT_NEAR(circle.r.y, real(0.45), real(0.05));
+  // Bounded: the overlap is shared somehow, but the circle is never pushed further than to
+  // rest on one border (y = 0.5 on the floor, 0.4 under the ceiling).
+  const real tolerance = test::isFloat ? real(1e-5) : real(1e-9);
+  EXPECT_GE(circle.r.y, real(0.4) - tolerance);
+  EXPECT_LE(circle.r.y, real(0.5) + tolerance);
 }
 
 TEST(Islands, SeparateGroupsAreSeparateIslands) {
