@@ -1,10 +1,11 @@
 #include <ThyrixLite/SweepAndPrune.h>
 
 #include <algorithm>
+#include <limits>
 
 namespace thyrix {
 
-void SweepAndPrune::reserve(std::uint32_t count) { entries_.reserve(count); }
+void SweepAndPrune::reserve(std::uint32_t count) { entries_.reserve(std::size_t{count} + 1); }
 
 bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, real testsPerBox,
                               std::vector<BoxPair>& pairs) {
@@ -38,18 +39,21 @@ bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, real testsPerB
   // sort's order is strict and total. A NaN on the other axis fails every comparison, so such
   // a box pairs with nothing, as with BoundingBox::overlaps().
   const auto count = static_cast<std::uint32_t>(boxes.size());
-  const bool keepOrder = axis == axis_ && entries_.size() == count;
+  const bool keepOrder = axis == axis_ && entries_.size() == std::size_t{count} + 1;
   if (!keepOrder) {
-    entries_.resize(count);
+    entries_.resize(std::size_t{count} + 1);
     for (std::uint32_t i = 0; i < count; ++i) entries_[i].index = i;
   }
-  for (Entry& e : entries_) {
-    const BoundingBox& box = boxes[e.index];
-    e = axis == 0 ? Entry{box.lower.x, box.upper.x, box.lower.y, box.upper.y, e.index}
-                  : Entry{box.lower.y, box.upper.y, box.lower.x, box.upper.x, e.index};
-  }
   axis_ = axis;
-  sort();
+  if (axis == 0)
+    load<0>(boxes);
+  else
+    load<1>(boxes);
+  sort(count);
+  // A sentinel after the last entry starts beyond every box (the coordinates on the axis are
+  // finite, or the estimate would be NaN): the scan below needs no end test.
+  constexpr real beyond = std::numeric_limits<real>::infinity();
+  entries_[count] = {beyond, beyond, beyond, beyond, count};
 
   // Each box against the boxes after it that start before it ends on the axis; the first that
   // starts beyond ends the scan (all later ones start later still). The scan's condition is
@@ -57,14 +61,15 @@ bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, real testsPerB
   // axis, so the pairs are exactly those BoundingBox::overlaps() accepts. Past a few times the
   // expected number of tests (clusters far apart look evenly spread), the sweep gives up.
   const std::size_t start = pairs.size();
-  const std::size_t n = entries_.size();
+  const std::size_t n = count;
   const std::size_t maxTests = static_cast<std::size_t>(3 * testsPerBox * static_cast<real>(n));
   std::size_t tests = 0;
+  const Entry* const entries = entries_.data();
   for (std::size_t k = 0; k < n; ++k) {
-    const Entry p = entries_[k];
+    const Entry p = entries[k];
     std::size_t m = k + 1;
-    for (; m < n && entries_[m].lower <= p.upper; ++m) {
-      const Entry& q = entries_[m];
+    for (; entries[m].lower <= p.upper; ++m) {
+      const Entry& q = entries[m];
       if (p.lower <= q.upper && p.crossLower <= q.crossUpper && q.crossLower <= p.crossUpper)
         pairs.push_back({std::min(p.index, q.index), std::max(p.index, q.index)});
     }
@@ -77,23 +82,37 @@ bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, real testsPerB
   return true;
 }
 
-void SweepAndPrune::sort() {
+template <int axis>
+void SweepAndPrune::load(std::span<const BoundingBox> boxes) {
+  // One loop per axis: no choice of coordinates per box.
+  Entry* const entries = entries_.data();
+  for (std::size_t k = 0; k < boxes.size(); ++k) {
+    const std::uint32_t index = entries[k].index;
+    const BoundingBox& box = boxes[index];
+    if constexpr (axis == 0)
+      entries[k] = {box.lower.x, box.upper.x, box.lower.y, box.upper.y, index};
+    else
+      entries[k] = {box.lower.y, box.upper.y, box.lower.x, box.upper.x, index};
+  }
+}
+
+void SweepAndPrune::sort(std::size_t n) {
   const auto before = [](const Entry& a, const Entry& b) {
     return a.lower < b.lower || (a.lower == b.lower && a.index < b.index);
   };
-  // Insertion sort from the last order: a few swaps when the boxes moved a little. Past a
+  // Insertion sort from the last order: a few moves when the boxes moved a little. Past a
   // budget of moves (the order changed a lot), a full sort finishes the job in n log n.
-  const std::size_t n = entries_.size();
+  Entry* const entries = entries_.data();
   std::size_t budget = 4 * n + 64;
   for (std::size_t k = 1; k < n; ++k) {
-    if (!before(entries_[k], entries_[k - 1])) continue;
-    const Entry e = entries_[k];
+    if (!before(entries[k], entries[k - 1])) continue;
+    const Entry e = entries[k];
     std::size_t m = k;
-    for (; m > 0 && before(e, entries_[m - 1]); --m) entries_[m] = entries_[m - 1];
-    entries_[m] = e;
+    for (; m > 0 && before(e, entries[m - 1]); --m) entries[m] = entries[m - 1];
+    entries[m] = e;
     const std::size_t moved = k - m;
     if (moved > budget) {
-      std::sort(entries_.begin(), entries_.end(), before);
+      std::sort(entries, entries + n, before);
       return;
     }
     budget -= moved;

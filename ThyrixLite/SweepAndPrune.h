@@ -49,11 +49,16 @@ class SweepAndPrune {
     real crossUpper;
     std::uint32_t index;
   };
-  /// Puts entries_ in sweep order: by lower side, then by index.
-  void sort();
+  /// Reads @p boxes along @p axis (0 x, 1 y) into entries_, in the order of the indices
+  /// entries_ holds.
+  template <int axis>
+  void load(std::span<const BoundingBox> boxes);
+  /// Puts the first @p n entries in sweep order: by lower side, then by index.
+  void sort(std::size_t n);
 
-  std::vector<Entry> entries_;  // the boxes in sweep order (the last call's, until sorted)
-  int axis_ = -1;               // the last call's axis (0 x, 1 y), -1 before the first call
+  /// The boxes in sweep order (the last call's, until sorted), then a sentinel.
+  std::vector<Entry> entries_;
+  int axis_ = -1;  // the last call's axis (0 x, 1 y), -1 before the first call
 };
 
 }  // namespace thyrix

@@ -155,17 +155,33 @@ void ArticulatedBody::forwardKinematics() {
   angle_[0] = baseAngle_;
   axis_[0] = {std::cos(baseAngle_), std::sin(baseAngle_)};
   comOffset_[0] = {};
+  // The parent's pose is carried in registers when it is the body just visited (slot i, the
+  // usual case within a limb), as in the articulated-body passes: each link's angle and
+  // origin wait for its parent's, and a round trip through memory would lengthen the chain.
+  Vector2 parentOrigin = origin_[0];
+  real parentAngle = angle_[0];
+  Vector2 parentAxis = axis_[0];
   for (std::size_t i = 0; i < links_.size(); ++i) {
     const ArticulatedLink& l = links_[i];
     const std::size_t p = parentSlot_[i];
     const std::size_t self = i + 1;
-    const Vector2 shift = rotate(axis_[p], l.jointPosition);
+    if (p != i) {
+      parentOrigin = origin_[p];
+      parentAngle = angle_[p];
+      parentAxis = axis_[p];
+    }
+    const Vector2 shift = rotate(parentAxis, l.jointPosition);
     shift_[i] = shift;
-    origin_[self] = origin_[p] + shift;
-    const real a = angle_[p] + q_[i];
+    const Vector2 origin = parentOrigin + shift;
+    origin_[self] = origin;
+    const real a = parentAngle + q_[i];
     angle_[self] = a;
-    axis_[self] = {std::cos(a), std::sin(a)};
-    comOffset_[self] = rotate(axis_[self], l.centerOfMass);
+    const Vector2 axis{std::cos(a), std::sin(a)};
+    axis_[self] = axis;
+    comOffset_[self] = rotate(axis, l.centerOfMass);
+    parentOrigin = origin;
+    parentAngle = a;
+    parentAxis = axis;
   }
   // Everything that depends on the configuration is now out of date.
   inertiasStale_ = true;
