@@ -149,7 +149,8 @@ class Simulator : public World {
     std::uint32_t firstShape = 0;   // its shapes are firstShape, firstShape + 1, ...
     std::uint32_t shapeCount = 0;
     bool movable = false;
-    bool standalone = false;  // the body is its one primitive
+    bool standalone = false;    // the body is its one primitive
+    bool restsCheaply = false;  // standalone, or no shape: at rest, only its sensors to note
   };
   /// The pose of a primitive its geometry was computed from, its capsule half axis, and its
   /// half length (fixed at construction: copied here so a moved shape reads one record).
@@ -161,6 +162,9 @@ class Simulator : public World {
   };
 
   void updateGeometry();
+  /// updateGeometry for a body that changed, or that has several shapes (whose poses are
+  /// then compared one by one).
+  [[gnu::noinline]] void updateBody(std::uint32_t index, bool changed);
   void addCachedBox(std::uint32_t shape, Vector2& boxMin, Vector2& boxMax) const;
   bool updateShape(std::uint32_t shape, bool poseKnown, Vector2& lower, Vector2& upper);
   void findBorderContacts(bool reuse);
