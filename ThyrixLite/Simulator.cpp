@@ -66,6 +66,7 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
   const std::size_t gridShapes = gridShapes_.size() + shapes - (borders - borderShapes_.size());
   const std::size_t words = (gridShapes + 63) / 64;
   reserveFor(bodyStates_, objects.size() + added.size());
+  reserveFor(pendingBodies_, objects.size() + added.size());
   reserveFor(defaultHooks_, objects.size() + added.size());
   reserveFor(customObjects_, objects.size() + added.size());
   reserveFor(listedObjects_, objects.size() + added.size());

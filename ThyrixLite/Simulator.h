@@ -162,9 +162,9 @@ class Simulator : public World {
   };
 
   void updateGeometry();
-  /// updateGeometry for a body that changed, or that has several shapes (whose poses are
-  /// then compared one by one).
-  [[gnu::noinline]] void updateBody(std::uint32_t index, bool changed);
+  /// updateGeometry for a body that changed (its collision filters with @p newFilters), or
+  /// that has several shapes (whose poses are then compared one by one).
+  void updateBody(std::uint32_t index, bool changed, bool newFilters);
   void addCachedBox(std::uint32_t shape, Vector2& boxMin, Vector2& boxMax) const;
   bool updateShape(std::uint32_t shape, bool poseKnown, Vector2& lower, Vector2& upper);
   void findBorderContacts(bool reuse);
@@ -207,6 +207,7 @@ class Simulator : public World {
   std::vector<std::uint32_t> gridSlot_;       // per shape: its index in gridShapes_
   std::vector<std::uint64_t> gridMovedBits_;  // a bit per grid shape: moved this detection
   std::vector<std::uint64_t> borderReach_;    // per border, a bit per grid shape behind it
+  std::vector<std::uint32_t> pendingBodies_;  // updateGeometry: bodies for its second loop
   std::size_t reachShapes_ = 0;               // grid shapes borderReach_ was computed for
   std::vector<GlobalContactInfo> previousContacts_;  // the last detection's contacts
   std::vector<std::uint32_t> previousStart_;         // previous contacts by shape A: offsets
