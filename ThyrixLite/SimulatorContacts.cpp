@@ -200,8 +200,9 @@ void Simulator::updateGeometry() {
   pendingBodies_.resize(states.size());
   std::uint32_t* const pending = pendingBodies_.data();
   std::uint32_t pendingCount = 0;
-  for (std::uint32_t index = 0; index < states.size(); ++index) {
-    const BodyState& state = states[index];
+  std::uint32_t index = 0;  // of state (counted, not computed from the address: a division)
+  for (const BodyState& state : states) {
+    ++index;
     PhysicalObject& body = *state.object;
     // A body is unchanged if its pose and its collision filters are: its rigid parts are then
     // where they were (followOwner would put them there again), unless moved by hand, which
@@ -213,7 +214,8 @@ void Simulator::updateGeometry() {
                                      (bitsOf(body.r.y) ^ bitsOf(state.r.y)) |
                                      (bitsOf(body.alpha) ^ bitsOf(state.alpha)) | filters | forced;
     if (difference != 0 || !state.restsCheaply) {  // for the second loop
-      pending[pendingCount++] = 4 * index + (filters != 0 ? 2 : 0) + (difference != 0 ? 1 : 0);
+      pending[pendingCount++] =
+          4 * (index - 1) + (filters != 0 ? 2 : 0) + (difference != 0 ? 1 : 0);
       continue;
     }
     // The common case, a primitive of its own (or a shapeless body) at rest: nothing to do
