@@ -135,7 +135,7 @@ std::uint64_t above(std::uint32_t i) { return ~std::uint64_t{0} << i << 1; }
 void BroadPhase::findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint64_t moved,
                                    bool remembered, std::vector<BoxPair>& pairs) {
   const auto count = static_cast<std::uint32_t>(boxes.size());
-  if (overlaps_.size() < count) {
+  if (overlaps_.empty()) {  // the first call, even with no box (columns_ must not be null)
     overlaps_.resize(smallCount);
     movedRows_.resize(smallCount);
     // Padded to whole vectors of four (the rows mask the padding out).
