@@ -169,11 +169,11 @@ THYRIX_FORCE_INLINE void Simulator::updateBody(std::uint32_t index, bool changed
     const ShapePose& pose = shapePoses_[s];
     const bool moved =
         changed || !sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha);
-    shapeMoved[s] = moved ? 1 : 0;
-    if (!moved) {
+    if (!moved) {  // (its shapeMoved_ entry is 0 since the start of the detection)
       if (anyMoved) addCachedBox(s, boxMin, boxMax);
       continue;
     }
+    shapeMoved[s] = 1;
     if (!anyMoved)
       for (std::uint32_t t = state.firstShape; t < s; ++t) addCachedBox(t, boxMin, boxMax);
     anyMoved = true;
