@@ -11,6 +11,15 @@
 
 namespace thyrix {
 
+/// Pointers to the four corner coordinates of boxes stored by coordinate (structure of
+/// arrays), for testing one box against many at once.
+struct BoxColumns {
+  real* lowerX;  ///< lower corner x of each box
+  real* upperX;  ///< upper corner x of each box
+  real* lowerY;  ///< lower corner y of each box
+  real* upperY;  ///< upper corner y of each box
+};
+
 /// Finds every pair of overlapping boxes.
 ///
 /// Up to smallCount boxes, every pair is tested, and the result is remembered as one bit mask
@@ -69,6 +78,9 @@ class BroadPhase {
   void sortByCell(std::uint32_t count, std::uint32_t cellCount);
   void reserveFor(std::uint32_t count);
 
+  // Few boxes: the corners by coordinate, smallCount + 3 of each (padding for whole vectors)
+  // in columns_: lower x, upper x, lower y, upper y.
+  std::vector<real> columns_;
   // Few boxes: bit j of overlaps_[i] is set when boxes i < j overlap (last call's result);
   // bit i of rowsWithPairs_ when overlaps_[i] is not zero.
   std::vector<std::uint64_t> overlaps_;

@@ -17,4 +17,18 @@ void Integrator::integrate(const ObjectList& objects,
   }
 }
 
+void Integrator::integrateExcept(const ObjectList& objects,
+                                 std::span<const std::uint32_t> customObjects, real dt) const {
+  std::size_t begin = 0;
+  const auto integrateRun = [&objects, dt, &begin](std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) objects[i].PhysicalObject::integrate(dt);
+  };
+  for (const std::uint32_t custom : customObjects) {
+    integrateRun(custom);
+    objects[custom].integrate(dt);
+    begin = custom + std::size_t{1};
+  }
+  integrateRun(objects.size());
+}
+
 }  // namespace thyrix

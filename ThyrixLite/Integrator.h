@@ -21,6 +21,11 @@ class Integrator {
   /// for the core shapes, which do not override it).
   void integrate(const ObjectList& objects, std::span<const std::uint8_t> defaultIntegration,
                  real dt) const;
+  /// The same again, but given the increasing indices of the objects that are *not* moved
+  /// by PhysicalObject::integrate (@p customObjects, called virtually): the runs of objects
+  /// between them need no flag test each.
+  void integrateExcept(const ObjectList& objects, std::span<const std::uint32_t> customObjects,
+                       real dt) const;
 };
 
 }  // namespace thyrix

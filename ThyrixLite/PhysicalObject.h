@@ -59,9 +59,15 @@ class PhysicalObject : public GraphicalObject {
   /// Phase 5 of a step: velocities from the accumulated external force and torque alone,
   /// `v = F / m`, `omega = torque / I`; the accumulators are then reset to zero.
   virtual void computeDerivativesWithoutContacts() {
-    if (fixed || (unpushed() && m > 0 && I > 0)) {
+    if (unpushed() && m > 0 && I > 0) {
       // Unpushed (most bodies at rest): +0 divided by a positive mass is +0, so the three
-      // divisions are skipped with the same result, bit for bit.
+      // divisions are skipped with the same result, bit for bit, fixed or not; and the
+      // accumulators already hold +0, so they need no reset.
+      v = {};
+      omega = 0;
+      return;
+    }
+    if (fixed) {
       v = {};
       omega = 0;
     } else {

@@ -66,6 +66,7 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
   const std::size_t gridShapes = gridShapes_.size() + shapes - (borders - borderShapes_.size());
   const std::size_t words = (gridShapes + 63) / 64;
   reserveFor(bodyStates_, objects.size() + added.size());
+  reserveFor(pendingBodies_, objects.size() + added.size());
   reserveFor(defaultHooks_, objects.size() + added.size());
   reserveFor(customObjects_, objects.size() + added.size());
   reserveFor(listedObjects_, objects.size() + added.size());
@@ -83,6 +84,7 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
   state.firstShape = static_cast<std::uint32_t>(shapes_.size());
   state.shapeCount = static_cast<std::uint32_t>(object.primitives().size());
   state.standalone = state.shapeCount == 1 && object.primitives()[0] == &object;
+  state.restsCheaply = state.standalone || state.shapeCount == 0;
   bodyStates_.push_back(state);  // unknown: its first detection computes everything
   for (Primitive* primitive : object.primitives()) {
     const auto shape = static_cast<std::uint32_t>(shapes_.size());
@@ -147,17 +149,22 @@ void Simulator::advanceTime() {
   indexContacts();
   applyMouseForce();
   // In registration order (an elastoid pushes its bodies, registered after it, before they
-  // compute their velocities); the core shapes without a virtual call.
-  for (std::uint32_t i = 0; i < objects.size(); ++i) {
-    PhysicalObject& object = objects[i];
-    if (defaultHooks_[i] != 0)
-      object.PhysicalObject::computeDerivativesWithoutContacts();
-    else
-      object.computeDerivativesWithoutContacts();
+  // compute their velocities); the core shapes without a virtual call, in runs between the
+  // other objects (no flag to test per object).
+  std::size_t begin = 0;
+  const auto computeRun = [this, &begin](std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      objects[i].PhysicalObject::computeDerivativesWithoutContacts();
+  };
+  for (const std::uint32_t custom : customObjects_) {
+    computeRun(custom);
+    objects[custom].computeDerivativesWithoutContacts();
+    begin = custom + std::size_t{1};
   }
+  computeRun(objects.size());
   solveContacts();
   for (const std::uint32_t i : customObjects_) objects[i].control();  // the others do nothing
-  integrator.integrate(objects, defaultHooks_, timestep_);
+  integrator.integrateExcept(objects, customObjects_, timestep_);
   ++stepCount_;
   time_ += timestep_;
 }

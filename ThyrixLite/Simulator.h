@@ -150,7 +150,8 @@ class Simulator : public World {
     std::uint32_t firstShape = 0;   // its shapes are firstShape, firstShape + 1, ...
     std::uint32_t shapeCount = 0;
     bool movable = false;
-    bool standalone = false;  // the body is its one primitive
+    bool standalone = false;    // the body is its one primitive
+    bool restsCheaply = false;  // standalone, or no shape: at rest, only its sensors to note
   };
   /// The pose of a primitive its geometry was computed from, its capsule half axis, and its
   /// half length (fixed at construction: copied here so a moved shape reads one record).
@@ -162,6 +163,9 @@ class Simulator : public World {
   };
 
   void updateGeometry();
+  /// updateGeometry for a body that changed (its collision filters with @p newFilters), or
+  /// that has several shapes (whose poses are then compared one by one).
+  void updateBody(std::uint32_t index, bool changed, bool newFilters);
   void addCachedBox(std::uint32_t shape, Vector2& boxMin, Vector2& boxMax) const;
   bool updateShape(std::uint32_t shape, bool poseKnown, Vector2& lower, Vector2& upper);
   void findBorderContacts(bool reuse);
@@ -204,6 +208,7 @@ class Simulator : public World {
   std::vector<std::uint32_t> gridSlot_;       // per shape: its index in gridShapes_
   std::vector<std::uint64_t> gridMovedBits_;  // a bit per grid shape: moved this detection
   std::vector<std::uint64_t> borderReach_;    // per border, a bit per grid shape behind it
+  std::vector<std::uint32_t> pendingBodies_;  // updateGeometry: bodies for its second loop
   std::size_t reachShapes_ = 0;               // grid shapes borderReach_ was computed for
   std::vector<GlobalContactInfo> previousContacts_;  // the last detection's contacts
   std::vector<std::uint32_t> previousStart_;         // previous contacts by shape A: offsets

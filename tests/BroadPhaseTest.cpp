@@ -435,6 +435,32 @@ TEST(BroadPhase, FewBoxesRetestOnlyTheMovedOnes) {
   expectSameAsBruteForce(boxes, incrementalPairs);
 }
 
+TEST(BroadPhase, FewBoxesFollowOverlapsWithNaNInfinitiesAndSignedZeros) {
+  // The few-box path tests several boxes at once (by coordinate): the pairs must be exactly
+  // those BoundingBox::overlaps accepts, whatever the count (whole vectors or not) and the
+  // values (a comparison with NaN is false; -0 equals +0; infinite corners).
+  const real inf = std::numeric_limits<real>::infinity();
+  const real nan = std::numeric_limits<real>::quiet_NaN();
+  const real specials[] = {nan, inf, -inf, real(-0.0), real(0.0)};
+  MTRandom random(17);
+  for (const std::uint32_t count : {2u, 3u, 4u, 5u, 7u, 33u, 47u, BroadPhase::smallCount}) {
+    std::vector<BoundingBox> boxes = randomBoxes(count, static_cast<int>(count), 0, 4);
+    for (std::uint32_t i = 0; i < count; i += 3) {  // a special value in one corner coordinate
+      real* corner[] = {&boxes[i].lower.x, &boxes[i].lower.y, &boxes[i].upper.x, &boxes[i].upper.y};
+      *corner[random.integer(4)] = specials[random.integer(5)];
+    }
+    BroadPhase broadPhase;
+    std::vector<BoxPair> pairs;
+    broadPhase.findPairs(boxes, pairs);
+    std::vector<Pair> expected;
+    for (std::uint32_t i = 0; i < count; ++i)
+      for (std::uint32_t j = i + 1; j < count; ++j)
+        if (boxes[i].overlaps(boxes[j])) expected.emplace_back(i, j);
+    SCOPED_TRACE(::testing::Message() << count << " boxes");
+    EXPECT_EQ(sortedPairs(pairs), expected);
+  }
+}
+
 TEST(BroadPhase, WarmedUpCallsReuseTheirBuffers) {
   const std::vector<BoundingBox> large = randomBoxes(31, 1200, 3, 35);
   // A prefix: no more boxes, cells or pairs than the large input.

@@ -13,6 +13,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+#include <vector>
 
 namespace thyrix {
 namespace {
@@ -235,7 +237,74 @@ TEST(Simulator, FixedBodiesNeverMove) {
   }
   EXPECT_EQ(wall.r, Vector2{});
   EXPECT_EQ(wall.v, Vector2{});
+  EXPECT_EQ(wall.externalForce, Vector2{});  // used up by the step, fixed or not
   EXPECT_GE(ball.r.x, real(1.5) - test::loose);
+}
+
+/// A circle with its own step hooks: in phase 5 it pushes two other bodies, and it counts
+/// its integrations (the simulator runs such objects through their virtual hooks, in
+/// registration order among the core shapes it runs directly).
+class Pusher : public Circle {
+ public:
+  Pusher(PhysicalObject& before, PhysicalObject& after)
+      : Circle(real(0.1), real(1)), before_(before), after_(after) {}
+  void computeDerivativesWithoutContacts() override {
+    before_.externalForce += Vector2{1, 0};
+    after_.externalForce += Vector2{0, 1};
+    Circle::computeDerivativesWithoutContacts();
+  }
+  void integrate(real dt) override {
+    ++integrations;
+    Circle::integrate(dt);
+  }
+  int integrations = 0;
+
+ private:
+  PhysicalObject& before_;
+  PhysicalObject& after_;
+};
+
+TEST(Simulator, OwnHooksRunInRegistrationOrderAmongTheCoreShapes) {
+  // A push in phase 5 reaches a body registered after the pusher in the same step, and one
+  // registered before it in the next step; every object is integrated once per step.
+  Simulator simulator(real(0.5));
+  std::vector<Circle*> circles;
+  std::vector<Pusher*> pushers;
+  const auto addCircle = [&](real x) {
+    circles.push_back(&simulator.registerObject(std::make_unique<Circle>(real(0.1), real(2))));
+    circles.back()->r = {x, 0};
+  };
+  const auto addPusher = [&](Circle& before, Circle& after, real x) {
+    pushers.push_back(&simulator.registerObject(std::make_unique<Pusher>(before, after)));
+    pushers.back()->r = {x, 5};
+  };
+  addCircle(0);                // object 0
+  addCircle(1);                // 1
+  circles.push_back(nullptr);  // (filled below: the pushers need it first)
+  auto third = std::make_unique<Circle>(real(0.1), real(2));
+  auto fourth = std::make_unique<Circle>(real(0.1), real(2));
+  addPusher(*circles[1], *third, 2);  // 2: pushes object 1 (before) and 3 (after)
+  circles[2] = &simulator.registerObject(std::move(third));  // 3
+  circles[2]->r = {3, 0};
+  addPusher(*circles[2], *fourth, 4);  // 4: pushes object 3 (before) and 5 (after)
+  circles.push_back(&simulator.registerObject(std::move(fourth)));  // 5
+  circles[3]->r = {5, 0};
+  simulator.advanceTime();
+  EXPECT_EQ(circles[0]->r, (Vector2{0, 0}));
+  // Pushed by a later object: not moved yet, the push kept for the next step.
+  EXPECT_EQ(circles[1]->r, (Vector2{1, 0}));
+  EXPECT_EQ(circles[1]->externalForce, (Vector2{1, 0}));
+  // Pushed by an earlier object (v = F / m), then by a later one (kept).
+  EXPECT_EQ(circles[2]->v, (Vector2{0, real(0.5)}));
+  EXPECT_EQ(circles[2]->r, (Vector2{3, real(0.25)}));
+  EXPECT_EQ(circles[2]->externalForce, (Vector2{1, 0}));
+  EXPECT_EQ(circles[3]->r, (Vector2{5, real(0.25)}));
+  EXPECT_EQ(circles[3]->externalForce, Vector2{});
+  simulator.advanceTime();
+  EXPECT_EQ(circles[1]->r, (Vector2{real(1.25), 0}));
+  EXPECT_EQ(circles[2]->r, (Vector2{real(3.25), real(0.5)}));
+  EXPECT_EQ(circles[3]->r, (Vector2{5, real(0.5)}));
+  for (const Pusher* pusher : pushers) EXPECT_EQ(pusher->integrations, 2);
 }
 
 }  // namespace
