@@ -16,11 +16,15 @@ std::size_t tableSize(std::size_t count) {
 }
 }  // namespace
 
-void ContactForceCache::reserve(std::size_t count) { table_.reserve(tableSize(count)); }
+void ContactForceCache::reserve(std::size_t count) {
+  table_.reserve(tableSize(count));
+  stored_.reserve(count);
+}
 
 void ContactForceCache::reset(std::size_t count) {
   const std::size_t capacity = tableSize(count);
-  table_.assign(capacity, Entry{empty, 0});
+  table_.assign(capacity, Slot{empty, 0});
+  stored_.clear();
   mask_ = capacity - 1;
   entries_ = 0;
 }
@@ -28,16 +32,32 @@ void ContactForceCache::reset(std::size_t count) {
 void ContactForceCache::insert(std::uint64_t key, real force) {
   std::size_t i = slot(key);
   while (table_[i].key != empty) i = (i + 1) & mask_;
-  table_[i] = {key, force};
+  table_[i] = {key, stored_.size()};
+  stored_.push_back({key, force});
   ++entries_;
 }
 
-real ContactForceCache::find(std::uint64_t key) const {
-  if (table_.empty()) return 0;
+std::size_t ContactForceCache::position(std::uint64_t key) const {
+  if (table_.empty()) return stored_.size();
   for (std::size_t i = slot(key);; i = (i + 1) & mask_) {
-    if (table_[i].key == key) return table_[i].force;
-    if (table_[i].key == empty) return 0;
+    if (table_[i].key == key) return table_[i].position;
+    if (table_[i].key == empty) return stored_.size();
   }
+}
+
+real ContactForceCache::find(std::uint64_t key) const {
+  const std::size_t p = position(key);
+  return p < stored_.size() ? stored_[p].force : 0;
+}
+
+real ContactForceCache::find(std::uint64_t key, std::size_t& hint) const {
+  std::size_t p = hint;
+  if (p >= stored_.size() || stored_[p].key != key) {
+    p = position(key);
+    if (p == stored_.size()) return 0;
+  }
+  hint = p + 1;
+  return stored_[p].force;
 }
 
 }  // namespace thyrix

@@ -13,6 +13,10 @@ namespace thyrix {
 /// its force. Rebuilt after each solve; lookups depend only on the keys, never on memory
 /// addresses, so warm starting is reproducible. The table only grows when the contact count
 /// reaches a new high: in a steady state it allocates nothing.
+///
+/// The entries are also kept in the order they were stored. Detection lists the contacts in
+/// nearly the same order from step to step, so a lookup with a hint (where the last one
+/// matched, plus one) usually finds its entry there, without hashing or probing.
 class ContactForceCache {
  public:
   /// The identity of a contact.
@@ -33,6 +37,9 @@ class ContactForceCache {
   void insert(std::uint64_t key, real force);
   /// The force stored under @p key, or 0.
   [[nodiscard]] real find(std::uint64_t key) const;
+  /// The same, looking first at the entry stored in position @p hint, which is then moved past
+  /// the entry found (unchanged when there is none). The result does not depend on the hint.
+  [[nodiscard]] real find(std::uint64_t key, std::size_t& hint) const;
 
  private:
   [[nodiscard]] std::size_t slot(std::uint64_t key) const;
@@ -43,7 +50,15 @@ class ContactForceCache {
     std::uint64_t key;
     real force;
   };
-  std::vector<Entry> table_;
+  /// A hash slot: the key, and the entry's position in stored_.
+  struct Slot {
+    std::uint64_t key;
+    std::size_t position;
+  };
+  /// The position of @p key in stored_, or stored_.size().
+  [[nodiscard]] std::size_t position(std::uint64_t key) const;
+  std::vector<Slot> table_;
+  std::vector<Entry> stored_;  // in the order of insertion
   std::size_t mask_ = 0;
   std::size_t entries_ = 0;
 };

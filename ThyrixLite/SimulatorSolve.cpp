@@ -240,10 +240,11 @@ void Simulator::solveIsland(std::span<const std::uint32_t> island) {
     ++statistics_.baraffFallbacks;
   }
   if (settings_.warmStart) {
+    std::size_t hint = 0;  // the cache keeps the last contact order, close to this one
     for (const std::uint32_t k : island) {
       const GlobalContactInfo& c = contacts.items_[k];
       ContactConstraint& row = rows_[k];
-      row.force = lastForces_.find(ContactForceCache::key(c.shapeA, c.shapeB, c.feature));
+      row.force = lastForces_.find(ContactForceCache::key(c.shapeA, c.shapeB, c.feature), hint);
       if (row.force > 0) row.applyImpulse(row.force, bodies_[row.a], bodies_[row.b]);
     }
   }
