@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace thyrix {
 namespace {
@@ -99,8 +100,22 @@ void AngularCoverage::merge() {
   if (merged_) return;
   merged_ = true;
   if (intervals_.empty()) return;
-  std::sort(intervals_.begin(), intervals_.end(),
-            [](const AngularInterval& a, const AngularInterval& b) { return a.begin < b.begin; });
+  const auto byBegin = [](const AngularInterval& a, const AngularInterval& b) {
+    return a.begin < b.begin;
+  };
+  // A sensor sees a handful of intervals at a time: an insertion sort does them with a fraction
+  // of std::sort's overhead. The order of equal begins does not matter: an interval beginning
+  // where the previous one begins always joins it, so the union is the same.
+  if (intervals_.size() <= 16) {
+    for (std::size_t i = 1; i < intervals_.size(); ++i) {
+      const AngularInterval moved = intervals_[i];
+      std::size_t j = i;
+      for (; j > 0 && byBegin(moved, intervals_[j - 1]); --j) intervals_[j] = intervals_[j - 1];
+      intervals_[j] = moved;
+    }
+  } else {
+    std::sort(intervals_.begin(), intervals_.end(), byBegin);
+  }
   std::size_t last = 0;  // the union so far ends with intervals_[last]
   for (std::size_t i = 1; i < intervals_.size(); ++i) {
     if (intervals_[i].begin <= intervals_[last].end) {  // overlaps or touches: extend
@@ -127,18 +142,23 @@ void AngularCoverage::coveredFractions(real begin, real width, std::span<real> f
   std::fill(fractions.begin(), fractions.end(), real(0));
   const std::size_t count = fractions.size();
   if (count == 0 || !(width > 0)) return;
-  const auto bound = [&](std::size_t i) { return begin + static_cast<real>(i) * width; };
+  // Through a signed index: converting a size_t to floating point takes several instructions
+  // on x86-64, a signed integer one (same value).
+  const auto bound = [&](std::size_t i) {
+    return begin + static_cast<real>(static_cast<std::ptrdiff_t>(i)) * width;
+  };
+  // One sweep: the union is sorted, so the first bin an interval may overlap never lies before
+  // the previous interval's (unsorted intervals, merge() not called, restart from bin 0). A bin
+  // skipped ends at or before the interval's begin, so its overlap would not be positive: each
+  // bin receives the same overlaps in the same order as when every bin is tried.
+  std::size_t first = 0;
+  real previousBegin = begin;
   for (const AngularInterval& interval : intervals_) {
-    // First bin that may overlap: the estimate is widened by one bin against rounding, and
-    // every overlap is computed exactly from the bin's bounds, so an estimate off by one is
-    // harmless.
-    const real estimate = std::floor((interval.begin - begin) / width);
-    std::size_t i = 0;
-    if (estimate >= 1) {
-      if (estimate > static_cast<real>(count)) continue;
-      i = static_cast<std::size_t>(estimate) - 1;
-    }
-    for (; i < count; ++i) {
+    if (interval.begin < previousBegin) first = 0;
+    previousBegin = interval.begin;
+    while (first < count && bound(first + 1) <= interval.begin) ++first;
+    if (first == count) continue;
+    for (std::size_t i = first; i < count; ++i) {
       const real low = bound(i);
       if (low >= interval.end) break;
       const real overlap = std::min(interval.end, bound(i + 1)) - std::max(interval.begin, low);

@@ -96,40 +96,72 @@ void VisualSensor::update(const ObjectList& objects) {
     coverage_.reserve(2 * primitives);
     objectsSized_ = objects.size();
   }
+  // Members copied to locals: coverage_.add() stores through a pointer the compiler cannot
+  // tell apart from them, so it would reload them for every primitive.
+  const PhysicalObject* const self = body_;
+  const real halfField = halfField_;
+  // outside()'s two cases: a field of at most pi is the intersection of the edges' half-planes.
+  const bool convexField = halfField <= pi<real> / 2;
+  // An arc is at most pi wide (half of it asin(...) <= pi / 2), so it spans at most
+  // [-3 pi / 2, 3 pi / 2] unwrapped: in a field of half width below pi / 2 (with a wide margin
+  // for rounding) its wrapped image never reaches the field, and a disk's arc needs no split.
+  const bool narrow = halfField < real(0.45) * pi<real>;
+  // Adds @p extent clipped to the field; false when it is the whole circle.
+  const auto addExtent = [&](const AngularExtent& extent) {
+    if (extent.wholeCircle) return false;
+    for (const AngularInterval& piece : extent.pieces())
+      coverage_.add(
+          AngularInterval{std::max(piece.begin, -halfField), std::min(piece.end, halfField)});
+    return true;
+  };
   for (const PhysicalObject& object : objects) {
     for (const Primitive* primitive : object.primitives()) {
-      if (&primitive->owner() == body_) continue;
-      AngularExtent extent;
-      switch (primitive->shapeType()) {
-        case ShapeType::HalfPlane:
+      const ShapeType type = primitive->shapeType();
+      if (type == ShapeType::Circle) {
+        // outside() inlined, before anything else: most circles stop here. The body's own
+        // circles contain the eye and pass, so they are excluded after it.
+        const real radius = primitive->radius();
+        const Vector2 offset = primitive->r - eye;
+        const bool right = cross(rightEdge, offset) < -radius;
+        const bool left = cross(leftEdge, offset) > radius;
+        if (convexField ? (right || left || dot(view, offset) < -radius) : (right && left))
           continue;
-        case ShapeType::Circle: {
-          const real radius = primitive->radius();
-          if (outside(primitive->r - eye, radius, view, rightEdge, leftEdge)) continue;
-          extent = diskExtent(eye, view, primitive->r, radius);
-          break;
+        if (&primitive->owner() == self) continue;
+        if (narrow) {
+          // diskExtent() and splitAtPi() inlined with the same arithmetic, bit for bit: in a
+          // field narrower than pi the pieces splitAtPi() makes of an arc crossing +-pi (or its
+          // shift of an arc whose rounded middle passes +-pi) lie outside the field, so clipping
+          // the unsplit arc gives the same intervals (VisualSensorTest's
+          // MatchesTheExtentFunctionsBitForBit checks).
+          const real distanceSquared = offset.lengthSquared();
+          if (distanceSquared <= radius * radius) {
+            std::fill(activations_.begin(), activations_.end(), real(1));
+            return;
+          }
+          const real half = std::asin(std::min(real(1), radius / std::sqrt(distanceSquared)));
+          const real direction = std::atan2(cross(view, offset), dot(view, offset));
+          coverage_.add(AngularInterval{std::max(direction - half, -halfField),
+                                        std::min(direction + half, halfField)});
+        } else if (!addExtent(diskExtent(eye, view, primitive->r, radius))) {
+          std::fill(activations_.begin(), activations_.end(), real(1));
+          return;
         }
-        case ShapeType::Capsule: {
-          const real radius = primitive->radius();
-          const real halfLength = primitive->halfLength();
-          // The bounding disk first, before the trigonometry of the end points.
-          if (outside(primitive->r - eye, radius + halfLength, view, rightEdge, leftEdge)) continue;
-          const Vector2 axis{halfLength * std::cos(primitive->alpha),
-                             halfLength * std::sin(primitive->alpha)};
-          const Vector2 p0 = primitive->r - axis;
-          const Vector2 p1 = primitive->r + axis;
-          if (outside(p0 - eye, p1 - eye, radius, view, rightEdge, leftEdge)) continue;
-          extent = capsuleExtent(eye, view, p0, p1, radius);
-          break;
+      } else if (type == ShapeType::Capsule) {
+        if (&primitive->owner() == self) continue;
+        const real radius = primitive->radius();
+        const real halfLength = primitive->halfLength();
+        // The bounding disk first, before the trigonometry of the end points.
+        if (outside(primitive->r - eye, radius + halfLength, view, rightEdge, leftEdge)) continue;
+        const Vector2 axis{halfLength * std::cos(primitive->alpha),
+                           halfLength * std::sin(primitive->alpha)};
+        const Vector2 p0 = primitive->r - axis;
+        const Vector2 p1 = primitive->r + axis;
+        if (outside(p0 - eye, p1 - eye, radius, view, rightEdge, leftEdge)) continue;
+        if (!addExtent(capsuleExtent(eye, view, p0, p1, radius))) {
+          std::fill(activations_.begin(), activations_.end(), real(1));
+          return;
         }
-      }
-      if (extent.wholeCircle) {
-        std::fill(activations_.begin(), activations_.end(), real(1));
-        return;
-      }
-      for (const AngularInterval& piece : extent.pieces())
-        coverage_.add(
-            AngularInterval{std::max(piece.begin, -halfField_), std::min(piece.end, halfField_)});
+      }  // half-planes (borders) are not seen
     }
   }
   coverage_.merge();
