@@ -138,26 +138,25 @@ real AngularCoverage::covered(real begin, real end) const {
   return total;
 }
 
-void AngularCoverage::coveredFractions(real begin, real width, std::span<real> fractions) const {
+namespace {
+
+/// coveredFractions() of the sorted union @p intervals over the bins whose bounds @p bound(i)
+/// gives (bin i spans [bound(i), bound(i + 1)], increasing).
+template <class Bound>
+void fractionsOfBins(std::span<const AngularInterval> intervals, const Bound& bound,
+                     std::span<real> fractions) {
   std::fill(fractions.begin(), fractions.end(), real(0));
   const std::size_t count = fractions.size();
-  if (count == 0 || !(width > 0)) return;
-  // Through a signed index: converting a size_t to floating point takes several instructions
-  // on x86-64, a signed integer one (same value).
-  const auto bound = [&](std::size_t i) {
-    return begin + static_cast<real>(static_cast<std::ptrdiff_t>(i)) * width;
-  };
   // One sweep: the union is sorted, so the first bin an interval may overlap never lies before
   // the previous interval's (unsorted intervals, merge() not called, restart from bin 0). A bin
   // skipped ends at or before the interval's begin, so its overlap would not be positive: each
   // bin receives the same overlaps in the same order as when every bin is tried.
   std::size_t first = 0;
-  real previousBegin = begin;
-  for (const AngularInterval& interval : intervals_) {
+  real previousBegin = bound(0);
+  for (const AngularInterval& interval : intervals) {
     if (interval.begin < previousBegin) first = 0;
     previousBegin = interval.begin;
     while (first < count && bound(first + 1) <= interval.begin) ++first;
-    if (first == count) continue;
     for (std::size_t i = first; i < count; ++i) {
       const real low = bound(i);
       if (low >= interval.end) break;
@@ -169,6 +168,31 @@ void AngularCoverage::coveredFractions(real begin, real width, std::span<real> f
     if (fractions[i] > 0)
       fractions[i] = std::min(real(1), fractions[i] / (bound(i + 1) - bound(i)));
   }
+}
+
+}  // namespace
+
+void AngularCoverage::coveredFractions(real begin, real width, std::span<real> fractions) const {
+  if (fractions.empty() || !(width > 0)) {
+    std::fill(fractions.begin(), fractions.end(), real(0));
+    return;
+  }
+  // Through a signed index: converting a size_t to floating point takes several instructions
+  // on x86-64, a signed integer one (same value).
+  const auto bound = [&](std::size_t i) {
+    return begin + static_cast<real>(static_cast<std::ptrdiff_t>(i)) * width;
+  };
+  fractionsOfBins(intervals_, bound, fractions);
+}
+
+void AngularCoverage::coveredFractions(std::span<const real> bounds,
+                                       std::span<real> fractions) const {
+  if (fractions.empty() || bounds.size() != fractions.size() + 1) {
+    std::fill(fractions.begin(), fractions.end(), real(0));
+    return;
+  }
+  fractionsOfBins(
+      intervals_, [bounds](std::size_t i) { return bounds[i]; }, fractions);
 }
 
 }  // namespace thyrix

@@ -110,6 +110,12 @@ class AngularCoverage {
   /// union and the bins. A bin covered entirely gets exactly 1. Call merge() first.
   void coveredFractions(real begin, real width, std::span<real> fractions) const;
 
+  /// As coveredFractions() above, with the bins' bounds precomputed: bin i spans
+  /// `[bounds[i], bounds[i + 1]]`, so @p bounds (increasing) has one entry more than
+  /// @p fractions (otherwise every fraction is 0). With `bounds[i] = begin + i * width` the
+  /// fractions are the same bit for bit; a caller with fixed bins saves their computation.
+  void coveredFractions(std::span<const real> bounds, std::span<real> fractions) const;
+
  private:
   std::vector<AngularInterval> intervals_;
   bool merged_ = true;

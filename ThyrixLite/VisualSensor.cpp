@@ -44,6 +44,11 @@ VisualSensor::VisualSensor(const PhysicalObject& body, Vector2 localPosition, re
   cosHalfField_ = std::cos(halfField_);
   sinHalfField_ = std::sin(halfField_);
   activations_.assign(static_cast<std::size_t>(pixelCount), real(0));
+  // The arithmetic of AngularCoverage::coveredFractions(begin, width, ...), so the fractions
+  // are the same bit for bit.
+  bounds_.resize(static_cast<std::size_t>(pixelCount) + 1);
+  for (int i = 0; i <= pixelCount; ++i)
+    bounds_[static_cast<std::size_t>(i)] = -halfField_ + static_cast<real>(i) * pixelAngle_;
 }
 
 real VisualSensor::viewDirection() const { return wrapAngle(body_->alpha + localDirection_); }
@@ -94,14 +99,52 @@ void VisualSensor::update(const ObjectList& objects) {
     std::size_t primitives = 0;
     for (const PhysicalObject& object : objects) primitives += object.primitives().size();
     coverage_.reserve(2 * primitives);
+    candidates_.resize(primitives);
     objectsSized_ = objects.size();
   }
-  // Members copied to locals: coverage_.add() stores through a pointer the compiler cannot
-  // tell apart from them, so it would reload them for every primitive.
   const PhysicalObject* const self = body_;
   const real halfField = halfField_;
   // outside()'s two cases: a field of at most pi is the intersection of the edges' half-planes.
   const bool convexField = halfField <= pi<real> / 2;
+
+  // Pass 1, the culling of every primitive, calls no function: the loop keeps the eye, the
+  // view and the edges in registers (a call clobbers every floating-point register). The
+  // primitives that may be seen are written to candidates_, sized when the world grows; if a
+  // composed body gained parts since, the pass counts them, and runs again once it has room.
+  std::size_t count = 0;
+  const auto cull = [&]() {
+    count = 0;
+    Candidate* const out = candidates_.data();
+    const std::size_t room = candidates_.size();
+    for (const PhysicalObject& object : objects) {
+      for (const Primitive* primitive : object.primitives()) {
+        const ShapeType type = primitive->shapeType();
+        if (type == ShapeType::HalfPlane) continue;  // borders are not seen
+        // A capsule is culled by its bounding disk here, by its end disks in pass 2.
+        const real radius = type == ShapeType::Circle
+                                ? primitive->radius()
+                                : primitive->radius() + primitive->halfLength();
+        const Vector2 offset = primitive->r - eye;
+        // outside(), inlined. The body's own primitives usually contain the eye and pass, so
+        // they are excluded after it.
+        const bool right = cross(rightEdge, offset) < -radius;
+        const bool left = cross(leftEdge, offset) > radius;
+        if (convexField ? (right || left || dot(view, offset) < -radius) : (right && left))
+          continue;
+        if (&primitive->owner() == self) continue;
+        if (count < room) out[count] = Candidate{primitive, offset};
+        ++count;
+      }
+    }
+  };
+  cull();
+  if (count > candidates_.size()) {
+    candidates_.resize(count);
+    cull();
+  }
+
+  // Pass 2: the arcs of the candidates, clipped to the field. The union does not depend on
+  // the order in which they are added.
   // An arc is at most pi wide (half of it asin(...) <= pi / 2), so it spans at most
   // [-3 pi / 2, 3 pi / 2] unwrapped: in a field of half width below pi / 2 (with a wide margin
   // for rounding) its wrapped image never reaches the field, and a disk's arc needs no split.
@@ -114,58 +157,45 @@ void VisualSensor::update(const ObjectList& objects) {
           AngularInterval{std::max(piece.begin, -halfField), std::min(piece.end, halfField)});
     return true;
   };
-  for (const PhysicalObject& object : objects) {
-    for (const Primitive* primitive : object.primitives()) {
-      const ShapeType type = primitive->shapeType();
-      if (type == ShapeType::Circle) {
-        // outside() inlined, before anything else: most circles stop here. The body's own
-        // circles contain the eye and pass, so they are excluded after it.
-        const real radius = primitive->radius();
-        const Vector2 offset = primitive->r - eye;
-        const bool right = cross(rightEdge, offset) < -radius;
-        const bool left = cross(leftEdge, offset) > radius;
-        if (convexField ? (right || left || dot(view, offset) < -radius) : (right && left))
-          continue;
-        if (&primitive->owner() == self) continue;
-        if (narrow) {
-          // diskExtent() and splitAtPi() inlined with the same arithmetic, bit for bit: in a
-          // field narrower than pi the pieces splitAtPi() makes of an arc crossing +-pi (or its
-          // shift of an arc whose rounded middle passes +-pi) lie outside the field, so clipping
-          // the unsplit arc gives the same intervals (VisualSensorTest's
-          // MatchesTheExtentFunctionsBitForBit checks).
-          const real distanceSquared = offset.lengthSquared();
-          if (distanceSquared <= radius * radius) {
-            std::fill(activations_.begin(), activations_.end(), real(1));
-            return;
-          }
-          const real half = std::asin(std::min(real(1), radius / std::sqrt(distanceSquared)));
-          const real direction = std::atan2(cross(view, offset), dot(view, offset));
-          coverage_.add(AngularInterval{std::max(direction - half, -halfField),
-                                        std::min(direction + half, halfField)});
-        } else if (!addExtent(diskExtent(eye, view, primitive->r, radius))) {
+  for (std::size_t k = 0; k < count; ++k) {
+    const Primitive* const primitive = candidates_[k].primitive;
+    const real radius = primitive->radius();
+    if (primitive->shapeType() == ShapeType::Circle) {
+      if (narrow) {
+        // diskExtent() and splitAtPi() inlined with the same arithmetic, bit for bit: in a
+        // field narrower than pi the pieces splitAtPi() makes of an arc crossing +-pi (or its
+        // shift of an arc whose rounded middle passes +-pi) lie outside the field, so clipping
+        // the unsplit arc gives the same intervals (VisualSensorTest's
+        // MatchesTheExtentFunctionsBitForBit checks).
+        const Vector2 offset = candidates_[k].offset;
+        const real distanceSquared = offset.lengthSquared();
+        if (distanceSquared <= radius * radius) {
           std::fill(activations_.begin(), activations_.end(), real(1));
           return;
         }
-      } else if (type == ShapeType::Capsule) {
-        if (&primitive->owner() == self) continue;
-        const real radius = primitive->radius();
-        const real halfLength = primitive->halfLength();
-        // The bounding disk first, before the trigonometry of the end points.
-        if (outside(primitive->r - eye, radius + halfLength, view, rightEdge, leftEdge)) continue;
-        const Vector2 axis{halfLength * std::cos(primitive->alpha),
-                           halfLength * std::sin(primitive->alpha)};
-        const Vector2 p0 = primitive->r - axis;
-        const Vector2 p1 = primitive->r + axis;
-        if (outside(p0 - eye, p1 - eye, radius, view, rightEdge, leftEdge)) continue;
-        if (!addExtent(capsuleExtent(eye, view, p0, p1, radius))) {
-          std::fill(activations_.begin(), activations_.end(), real(1));
-          return;
-        }
-      }  // half-planes (borders) are not seen
+        const real half = std::asin(std::min(real(1), radius / std::sqrt(distanceSquared)));
+        const real direction = std::atan2(cross(view, offset), dot(view, offset));
+        coverage_.add(AngularInterval{std::max(direction - half, -halfField),
+                                      std::min(direction + half, halfField)});
+      } else if (!addExtent(diskExtent(eye, view, primitive->r, radius))) {
+        std::fill(activations_.begin(), activations_.end(), real(1));
+        return;
+      }
+    } else {  // a capsule
+      const real halfLength = primitive->halfLength();
+      const Vector2 axis{halfLength * std::cos(primitive->alpha),
+                         halfLength * std::sin(primitive->alpha)};
+      const Vector2 p0 = primitive->r - axis;
+      const Vector2 p1 = primitive->r + axis;
+      if (outside(p0 - eye, p1 - eye, radius, view, rightEdge, leftEdge)) continue;
+      if (!addExtent(capsuleExtent(eye, view, p0, p1, radius))) {
+        std::fill(activations_.begin(), activations_.end(), real(1));
+        return;
+      }
     }
   }
   coverage_.merge();
-  coverage_.coveredFractions(-halfField_, pixelAngle_, activations_);
+  coverage_.coveredFractions(bounds_, activations_);
 }
 
 }  // namespace thyrix

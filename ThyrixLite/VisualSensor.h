@@ -94,9 +94,19 @@ class VisualSensor {
   real halfField_;  // half the field of view
   real cosHalfField_;
   real sinHalfField_;
+  /// A primitive that update()'s culling let through, and its centre's offset from the eye.
+  struct Candidate {
+    const Primitive* primitive;
+    Vector2 offset;
+  };
+
   std::vector<real> activations_;
+  // The pixels' bounds relative to the view, -halfField_ + i pixelAngle_ for i in [0, n]:
+  // fixed, so update() does not recompute them.
+  std::vector<real> bounds_;
   AngularCoverage coverage_;
-  std::size_t objectsSized_ = 0;  // the number of objects coverage_ was last sized for
+  std::vector<Candidate> candidates_;  // update()'s culled primitives, one slot per primitive
+  std::size_t objectsSized_ = 0;       // the number of objects coverage_ was last sized for
 };
 
 }  // namespace thyrix
