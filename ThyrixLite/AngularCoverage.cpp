@@ -237,8 +237,30 @@ void AngularCoverage::coveredFractions(std::span<const real> bounds,
     std::fill(fractions.begin(), fractions.end(), real(0));
     return;
   }
-  fractionsOfBins(
-      intervals_, [bounds](std::size_t i) { return bounds[i]; }, fractions);
+  if (!merged_) {  // unsorted: the sweep over the intervals, which restarts when needed
+    fractionsOfBins(
+        intervals_, [bounds](std::size_t i) { return bounds[i]; }, fractions);
+    return;
+  }
+  // The union is sorted and disjoint, so the bins and the intervals advance together: bin by
+  // bin, skip the intervals that end at or before the bin, sum the overlaps of those that begin
+  // before its end. Each bin sums the same positive overlaps in the same order as
+  // fractionsOfBins(), from zero, so the fractions are the same bit for bit, without clearing
+  // them first.
+  const std::size_t count = fractions.size();
+  const std::size_t n = intervals_.size();
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const real low = bounds[i];
+    const real high = bounds[i + 1];
+    while (k < n && intervals_[k].end <= low) ++k;
+    real sum = 0;
+    for (std::size_t j = k; j < n && intervals_[j].begin < high; ++j) {
+      const real overlap = std::min(intervals_[j].end, high) - std::max(intervals_[j].begin, low);
+      if (overlap > 0) sum += overlap;
+    }
+    fractions[i] = sum > 0 ? std::min(real(1), sum / (high - low)) : real(0);
+  }
 }
 
 }  // namespace thyrix
