@@ -26,6 +26,21 @@ void validateSensor(Vector2 localPosition, real localDirection, int pixelCount, 
   requireFinite(localDirection, "VisualSensor.localDirection");
 }
 
+/// True if a disk at @p offset from the eye, of @p radius, lies entirely outside the field of
+/// view of edges @p rightEdge and @p leftEdge around @p view (conservative: a false answer does
+/// not mean the disk is seen). @p convexField: the field is at most pi wide.
+bool diskOutside(Vector2 offset, real radius, Vector2 view, Vector2 rightEdge, Vector2 leftEdge,
+                 bool convexField) {
+  // Entirely clockwise of the right edge's line, counter-clockwise of the left edge's line,
+  // or behind the eye. A field of view of at most pi is the intersection of the two edges'
+  // half-planes (and lies in front of the eye): outside either one is outside the field. A
+  // wider field is the union of the two: the disk must be outside both.
+  const bool right = cross(rightEdge, offset) < -radius;
+  const bool left = cross(leftEdge, offset) > radius;
+  if (convexField) return right || left || dot(view, offset) < -radius;
+  return right && left;
+}
+
 /// @p v rotated by the angle whose cosine and sine are @p c and @p s.
 Vector2 rotate(Vector2 v, real c, real s) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
 
@@ -63,18 +78,6 @@ std::pair<real, real> VisualSensor::pixelBounds(int i) const {
           first + static_cast<real>(i + 1) * pixelAngle_};
 }
 
-bool VisualSensor::outside(Vector2 offset, real radius, Vector2 view, Vector2 rightEdge,
-                           Vector2 leftEdge) const {
-  // Entirely clockwise of the right edge's line, counter-clockwise of the left edge's line,
-  // or behind the eye. A field of view of at most pi is the intersection of the two edges'
-  // half-planes (and lies in front of the eye): outside either one is outside the field. A
-  // wider field is the union of the two: the disk must be outside both.
-  const bool right = cross(rightEdge, offset) < -radius;
-  const bool left = cross(leftEdge, offset) > radius;
-  if (halfField_ <= pi<real> / 2) return right || left || dot(view, offset) < -radius;
-  return right && left;
-}
-
 bool VisualSensor::outside(Vector2 offset0, Vector2 offset1, real radius, Vector2 view,
                            Vector2 rightEdge, Vector2 leftEdge) const {
   // The capsule is the convex hull of its end disks: it lies in a half-plane if both do.
@@ -104,7 +107,6 @@ void VisualSensor::update(const ObjectList& objects) {
   }
   const PhysicalObject* const self = body_;
   const real halfField = halfField_;
-  // outside()'s two cases: a field of at most pi is the intersection of the edges' half-planes.
   const bool convexField = halfField <= pi<real> / 2;
 
   // Pass 1, the culling of every primitive, calls no function: the loop keeps the eye, the
@@ -125,12 +127,9 @@ void VisualSensor::update(const ObjectList& objects) {
                                 ? primitive->radius()
                                 : primitive->radius() + primitive->halfLength();
         const Vector2 offset = primitive->r - eye;
-        // outside(), inlined. The body's own primitives usually contain the eye and pass, so
-        // they are excluded after it.
-        const bool right = cross(rightEdge, offset) < -radius;
-        const bool left = cross(leftEdge, offset) > radius;
-        if (convexField ? (right || left || dot(view, offset) < -radius) : (right && left))
-          continue;
+        // The body's own primitives usually contain the eye and pass, so they are excluded
+        // after the test.
+        if (diskOutside(offset, radius, view, rightEdge, leftEdge, convexField)) continue;
         if (&primitive->owner() == self) continue;
         if (count < room) out[count] = Candidate{primitive, offset};
         ++count;
