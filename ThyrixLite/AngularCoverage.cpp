@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 
 namespace thyrix {
 namespace {
@@ -25,6 +27,51 @@ real halfAngle(real radius, real distance) {
 real angleBetween(Vector2 from, Vector2 to) { return std::atan2(cross(from, to), dot(from, to)); }
 
 }  // namespace
+
+real fastAtan2(real y, real x) {
+  const double ay = std::abs(static_cast<double>(y));
+  const double ax = std::abs(static_cast<double>(x));
+  // Zero, infinite or NaN components: rare, and the reduction below would get them wrong.
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  if (!(ax > 0 && ax < infinity && ay > 0 && ay < infinity)) return std::atan2(y, x);
+  const double big = std::max(ax, ay);
+  const double small = std::min(ax, ay);
+  // atan(small / big), in [0, pi / 4], as Cephes' atan(): below 0.66 directly, above it as
+  // pi / 4 + atan((t - 1) / (t + 1)), whose argument is computed from the components (one
+  // rounding instead of two).
+  constexpr double pio4 = 7.85398163397448309616e-1;
+  constexpr double moreBits = 6.123233995736765886130e-17;  // pi / 2 - double(pi / 2)
+  double base = 0;
+  double extra = 0;
+  double t = 0;
+  if (small <= 0.66 * big) {
+    t = small / big;
+  } else {
+    base = pio4;
+    extra = 0.5 * moreBits;
+    t = (small - big) / (small + big);
+  }
+  const double z = t * t;
+  const double p = (((-8.750608600031904122785e-1 * z - 1.615753718733365076637e1) * z -
+                     7.500855792314704667340e1) *
+                        z -
+                    1.228866684490136173410e2) *
+                       z -
+                   6.485021904942025371773e1;
+  const double q = ((((z + 2.485846490142306297962e1) * z + 1.650270098316988542046e2) * z +
+                     4.328810604912902668951e2) *
+                        z +
+                    4.853903996359136964868e2) *
+                       z +
+                   1.945506571482613964425e2;
+  double angle = base + (t * (z * p / q) + t + extra);
+  // Back to the octant of (x, y).
+  constexpr double pio2 = 1.57079632679489661923;
+  constexpr double pi = 3.14159265358979323846;
+  if (ay > ax) angle = pio2 - angle + moreBits;
+  if (x < 0) angle = pi - angle + 2 * moreBits;
+  return static_cast<real>(std::signbit(y) ? -angle : angle);
+}
 
 AngularExtent splitAtPi(real begin, real end) {
   AngularExtent extent;
@@ -99,8 +146,22 @@ void AngularCoverage::merge() {
   if (merged_) return;
   merged_ = true;
   if (intervals_.empty()) return;
-  std::sort(intervals_.begin(), intervals_.end(),
-            [](const AngularInterval& a, const AngularInterval& b) { return a.begin < b.begin; });
+  const auto byBegin = [](const AngularInterval& a, const AngularInterval& b) {
+    return a.begin < b.begin;
+  };
+  // A sensor sees a handful of intervals at a time: an insertion sort does them with a fraction
+  // of std::sort's overhead. The order of equal begins does not matter: an interval beginning
+  // where the previous one begins always joins it, so the union is the same.
+  if (intervals_.size() <= 16) {
+    for (std::size_t i = 1; i < intervals_.size(); ++i) {
+      const AngularInterval moved = intervals_[i];
+      std::size_t j = i;
+      for (; j > 0 && byBegin(moved, intervals_[j - 1]); --j) intervals_[j] = intervals_[j - 1];
+      intervals_[j] = moved;
+    }
+  } else {
+    std::sort(intervals_.begin(), intervals_.end(), byBegin);
+  }
   std::size_t last = 0;  // the union so far ends with intervals_[last]
   for (std::size_t i = 1; i < intervals_.size(); ++i) {
     if (intervals_[i].begin <= intervals_[last].end) {  // overlaps or touches: extend
@@ -123,22 +184,26 @@ real AngularCoverage::covered(real begin, real end) const {
   return total;
 }
 
-void AngularCoverage::coveredFractions(real begin, real width, std::span<real> fractions) const {
+namespace {
+
+/// coveredFractions() of the sorted union @p intervals over the bins whose bounds @p bound(i)
+/// gives (bin i spans [bound(i), bound(i + 1)], increasing).
+template <class Bound>
+void fractionsOfBins(std::span<const AngularInterval> intervals, const Bound& bound,
+                     std::span<real> fractions) {
   std::fill(fractions.begin(), fractions.end(), real(0));
   const std::size_t count = fractions.size();
-  if (count == 0 || !(width > 0)) return;
-  const auto bound = [&](std::size_t i) { return begin + static_cast<real>(i) * width; };
-  for (const AngularInterval& interval : intervals_) {
-    // First bin that may overlap: the estimate is widened by one bin against rounding, and
-    // every overlap is computed exactly from the bin's bounds, so an estimate off by one is
-    // harmless.
-    const real estimate = std::floor((interval.begin - begin) / width);
-    std::size_t i = 0;
-    if (estimate >= 1) {
-      if (estimate > static_cast<real>(count)) continue;
-      i = static_cast<std::size_t>(estimate) - 1;
-    }
-    for (; i < count; ++i) {
+  // One sweep: the union is sorted, so the first bin an interval may overlap never lies before
+  // the previous interval's (unsorted intervals, merge() not called, restart from bin 0). A bin
+  // skipped ends at or before the interval's begin, so its overlap would not be positive: each
+  // bin receives the same overlaps in the same order as when every bin is tried.
+  std::size_t first = 0;
+  real previousBegin = bound(0);
+  for (const AngularInterval& interval : intervals) {
+    if (interval.begin < previousBegin) first = 0;
+    previousBegin = interval.begin;
+    while (first < count && bound(first + 1) <= interval.begin) ++first;
+    for (std::size_t i = first; i < count; ++i) {
       const real low = bound(i);
       if (low >= interval.end) break;
       const real overlap = std::min(interval.end, bound(i + 1)) - std::max(interval.begin, low);
@@ -148,6 +213,53 @@ void AngularCoverage::coveredFractions(real begin, real width, std::span<real> f
   for (std::size_t i = 0; i < count; ++i) {
     if (fractions[i] > 0)
       fractions[i] = std::min(real(1), fractions[i] / (bound(i + 1) - bound(i)));
+  }
+}
+
+}  // namespace
+
+void AngularCoverage::coveredFractions(real begin, real width, std::span<real> fractions) const {
+  if (fractions.empty() || !(width > 0)) {
+    std::fill(fractions.begin(), fractions.end(), real(0));
+    return;
+  }
+  // Through a signed index: converting a size_t to floating point takes several instructions
+  // on x86-64, a signed integer one (same value).
+  const auto bound = [&](std::size_t i) {
+    return begin + static_cast<real>(static_cast<std::ptrdiff_t>(i)) * width;
+  };
+  fractionsOfBins(intervals_, bound, fractions);
+}
+
+void AngularCoverage::coveredFractions(std::span<const real> bounds,
+                                       std::span<real> fractions) const {
+  if (fractions.empty() || bounds.size() != fractions.size() + 1) {
+    std::fill(fractions.begin(), fractions.end(), real(0));
+    return;
+  }
+  if (!merged_) {  // unsorted: the sweep over the intervals, which restarts when needed
+    fractionsOfBins(
+        intervals_, [bounds](std::size_t i) { return bounds[i]; }, fractions);
+    return;
+  }
+  // The union is sorted and disjoint, so the bins and the intervals advance together: bin by
+  // bin, skip the intervals that end at or before the bin, sum the overlaps of those that begin
+  // before its end. Each bin sums the same positive overlaps in the same order as
+  // fractionsOfBins(), from zero, so the fractions are the same bit for bit, without clearing
+  // them first.
+  const std::size_t count = fractions.size();
+  const std::size_t n = intervals_.size();
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const real low = bounds[i];
+    const real high = bounds[i + 1];
+    while (k < n && intervals_[k].end <= low) ++k;
+    real sum = 0;
+    for (std::size_t j = k; j < n && intervals_[j].begin < high; ++j) {
+      const real overlap = std::min(intervals_[j].end, high) - std::max(intervals_[j].begin, low);
+      if (overlap > 0) sum += overlap;
+    }
+    fractions[i] = sum > 0 ? std::min(real(1), sum / (high - low)) : real(0);
   }
 }
 

@@ -43,6 +43,13 @@ struct AngularExtent {
   }
 };
 
+/// The angle of the vector (@p x, @p y), as std::atan2(@p y, @p x) in [-pi, pi], computed
+/// with Cephes' rational approximation of atan (one division for the reduced argument, one for
+/// the approximation) in double precision: within a few units in the last place of
+/// std::atan2 (AngularCoverageTest measures it), at a third of glibc's instructions. Zero,
+/// infinite and NaN arguments are passed on to std::atan2.
+real fastAtan2(real y, real x);
+
 /// The arc of directions from angle @p begin to angle @p end (`begin <= end`, any real values)
 /// as intervals within [-pi, pi]: the arc is first shifted by a multiple of 2 pi so that its
 /// middle lies in [-pi, pi], then split at +-pi if it crosses it. An arc of 2 pi or more gives
@@ -109,6 +116,12 @@ class AngularCoverage {
   /// @p width, bin i spanning `[begin + i width, begin + (i + 1) width]`: one sweep over the
   /// union and the bins. A bin covered entirely gets exactly 1. Call merge() first.
   void coveredFractions(real begin, real width, std::span<real> fractions) const;
+
+  /// As coveredFractions() above, with the bins' bounds precomputed: bin i spans
+  /// `[bounds[i], bounds[i + 1]]`, so @p bounds (increasing) has one entry more than
+  /// @p fractions (otherwise every fraction is 0). With `bounds[i] = begin + i * width` the
+  /// fractions are the same bit for bit; a caller with fixed bins saves their computation.
+  void coveredFractions(std::span<const real> bounds, std::span<real> fractions) const;
 
  private:
   std::vector<AngularInterval> intervals_;

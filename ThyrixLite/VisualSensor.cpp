@@ -26,6 +26,21 @@ void validateSensor(Vector2 localPosition, real localDirection, int pixelCount, 
   requireFinite(localDirection, "VisualSensor.localDirection");
 }
 
+/// True if a disk at @p offset from the eye, of @p radius, lies entirely outside the field of
+/// view of edges @p rightEdge and @p leftEdge around @p view (conservative: a false answer does
+/// not mean the disk is seen). @p convexField: the field is at most pi wide.
+bool diskOutside(Vector2 offset, real radius, Vector2 view, Vector2 rightEdge, Vector2 leftEdge,
+                 bool convexField) {
+  // Entirely clockwise of the right edge's line, counter-clockwise of the left edge's line,
+  // or behind the eye. A field of view of at most pi is the intersection of the two edges'
+  // half-planes (and lies in front of the eye): outside either one is outside the field. A
+  // wider field is the union of the two: the disk must be outside both.
+  const bool right = cross(rightEdge, offset) < -radius;
+  const bool left = cross(leftEdge, offset) > radius;
+  if (convexField) return right || left || dot(view, offset) < -radius;
+  return right && left;
+}
+
 /// @p v rotated by the angle whose cosine and sine are @p c and @p s.
 Vector2 rotate(Vector2 v, real c, real s) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
 
@@ -44,6 +59,11 @@ VisualSensor::VisualSensor(const PhysicalObject& body, Vector2 localPosition, re
   cosHalfField_ = std::cos(halfField_);
   sinHalfField_ = std::sin(halfField_);
   activations_.assign(static_cast<std::size_t>(pixelCount), real(0));
+  // The arithmetic of AngularCoverage::coveredFractions(begin, width, ...), so the fractions
+  // are the same bit for bit.
+  bounds_.resize(static_cast<std::size_t>(pixelCount) + 1);
+  for (int i = 0; i <= pixelCount; ++i)
+    bounds_[static_cast<std::size_t>(i)] = -halfField_ + static_cast<real>(i) * pixelAngle_;
 }
 
 real VisualSensor::viewDirection() const { return wrapAngle(body_->alpha + localDirection_); }
@@ -56,18 +76,6 @@ std::pair<real, real> VisualSensor::pixelBounds(int i) const {
   const real first = viewDirection() - halfField_;
   return {first + static_cast<real>(i) * pixelAngle_,
           first + static_cast<real>(i + 1) * pixelAngle_};
-}
-
-bool VisualSensor::outside(Vector2 offset, real radius, Vector2 view, Vector2 rightEdge,
-                           Vector2 leftEdge) const {
-  // Entirely clockwise of the right edge's line, counter-clockwise of the left edge's line,
-  // or behind the eye. A field of view of at most pi is the intersection of the two edges'
-  // half-planes (and lies in front of the eye): outside either one is outside the field. A
-  // wider field is the union of the two: the disk must be outside both.
-  const bool right = cross(rightEdge, offset) < -radius;
-  const bool left = cross(leftEdge, offset) > radius;
-  if (halfField_ <= pi<real> / 2) return right || left || dot(view, offset) < -radius;
-  return right && left;
 }
 
 bool VisualSensor::outside(Vector2 offset0, Vector2 offset1, real radius, Vector2 view,
@@ -94,46 +102,101 @@ void VisualSensor::update(const ObjectList& objects) {
     std::size_t primitives = 0;
     for (const PhysicalObject& object : objects) primitives += object.primitives().size();
     coverage_.reserve(2 * primitives);
+    candidates_.resize(primitives);
     objectsSized_ = objects.size();
   }
-  for (const PhysicalObject& object : objects) {
-    for (const Primitive* primitive : object.primitives()) {
-      if (&primitive->owner() == body_) continue;
-      AngularExtent extent;
-      switch (primitive->shapeType()) {
-        case ShapeType::HalfPlane:
-          continue;
-        case ShapeType::Circle: {
-          const real radius = primitive->radius();
-          if (outside(primitive->r - eye, radius, view, rightEdge, leftEdge)) continue;
-          extent = diskExtent(eye, view, primitive->r, radius);
-          break;
-        }
-        case ShapeType::Capsule: {
-          const real radius = primitive->radius();
-          const real halfLength = primitive->halfLength();
-          // The bounding disk first, before the trigonometry of the end points.
-          if (outside(primitive->r - eye, radius + halfLength, view, rightEdge, leftEdge)) continue;
-          const Vector2 axis{halfLength * std::cos(primitive->alpha),
-                             halfLength * std::sin(primitive->alpha)};
-          const Vector2 p0 = primitive->r - axis;
-          const Vector2 p1 = primitive->r + axis;
-          if (outside(p0 - eye, p1 - eye, radius, view, rightEdge, leftEdge)) continue;
-          extent = capsuleExtent(eye, view, p0, p1, radius);
-          break;
-        }
+  const PhysicalObject* const self = body_;
+  const real halfField = halfField_;
+  const bool convexField = halfField <= pi<real> / 2;
+
+  // Pass 1, the culling of every primitive, calls no function: the loop keeps the eye, the
+  // view and the edges in registers (a call clobbers every floating-point register). The
+  // primitives that may be seen are written to candidates_, sized when the world grows; if a
+  // composed body gained parts since, the pass counts them, and runs again once it has room.
+  std::size_t count = 0;
+  const auto cull = [&]() {
+    count = 0;
+    Candidate* const out = candidates_.data();
+    const std::size_t room = candidates_.size();
+    for (const PhysicalObject& object : objects) {
+      for (const Primitive* primitive : object.primitives()) {
+        const ShapeType type = primitive->shapeType();
+        if (type == ShapeType::HalfPlane) continue;  // borders are not seen
+        // A capsule is culled by its bounding disk here, by its end disks in pass 2.
+        const real radius = type == ShapeType::Circle
+                                ? primitive->radius()
+                                : primitive->radius() + primitive->halfLength();
+        const Vector2 offset = primitive->r - eye;
+        // The body's own primitives usually contain the eye and pass, so they are excluded
+        // after the test.
+        if (diskOutside(offset, radius, view, rightEdge, leftEdge, convexField)) continue;
+        if (&primitive->owner() == self) continue;
+        if (count < room) out[count] = Candidate{primitive, offset};
+        ++count;
       }
-      if (extent.wholeCircle) {
+    }
+  };
+  cull();
+  if (count > candidates_.size()) {
+    candidates_.resize(count);
+    cull();
+  }
+
+  // Pass 2: the arcs of the candidates, clipped to the field. The union does not depend on
+  // the order in which they are added.
+  // An arc is at most pi wide (half of it asin(...) <= pi / 2), so it spans at most
+  // [-3 pi / 2, 3 pi / 2] unwrapped: in a field of half width below pi / 2 (with a wide margin
+  // for rounding) its wrapped image never reaches the field, and a disk's arc needs no split.
+  const bool narrow = halfField < real(0.45) * pi<real>;
+  // Adds @p extent clipped to the field; false when it is the whole circle.
+  const auto addExtent = [&](const AngularExtent& extent) {
+    if (extent.wholeCircle) return false;
+    for (const AngularInterval& piece : extent.pieces())
+      coverage_.add(
+          AngularInterval{std::max(piece.begin, -halfField), std::min(piece.end, halfField)});
+    return true;
+  };
+  for (std::size_t k = 0; k < count; ++k) {
+    const Primitive* const primitive = candidates_[k].primitive;
+    const real radius = primitive->radius();
+    if (primitive->shapeType() == ShapeType::Circle) {
+      if (narrow) {
+        // diskExtent() and splitAtPi() inlined: in a field narrower than pi the pieces
+        // splitAtPi() makes of an arc crossing +-pi (or its shift of an arc whose rounded
+        // middle passes +-pi) lie outside the field, so clipping the unsplit arc gives the
+        // same intervals. The direction comes from fastAtan2() (within 2 units in the last
+        // place of std::atan2, a third of its cost), so the ends of the arc may differ from
+        // diskExtent()'s by a few units in the last place (VisualSensorTest's
+        // MatchesTheExtentFunctions checks the activations against it).
+        const Vector2 offset = candidates_[k].offset;
+        const real distanceSquared = offset.lengthSquared();
+        if (distanceSquared <= radius * radius) {
+          std::fill(activations_.begin(), activations_.end(), real(1));
+          return;
+        }
+        const real half = std::asin(std::min(real(1), radius / std::sqrt(distanceSquared)));
+        const real direction = fastAtan2(cross(view, offset), dot(view, offset));
+        coverage_.add(AngularInterval{std::max(direction - half, -halfField),
+                                      std::min(direction + half, halfField)});
+      } else if (!addExtent(diskExtent(eye, view, primitive->r, radius))) {
         std::fill(activations_.begin(), activations_.end(), real(1));
         return;
       }
-      for (const AngularInterval& piece : extent.pieces())
-        coverage_.add(
-            AngularInterval{std::max(piece.begin, -halfField_), std::min(piece.end, halfField_)});
+    } else {  // a capsule
+      const real halfLength = primitive->halfLength();
+      const Vector2 axis{halfLength * std::cos(primitive->alpha),
+                         halfLength * std::sin(primitive->alpha)};
+      const Vector2 p0 = primitive->r - axis;
+      const Vector2 p1 = primitive->r + axis;
+      if (outside(p0 - eye, p1 - eye, radius, view, rightEdge, leftEdge)) continue;
+      if (!addExtent(capsuleExtent(eye, view, p0, p1, radius))) {
+        std::fill(activations_.begin(), activations_.end(), real(1));
+        return;
+      }
     }
   }
   coverage_.merge();
-  coverage_.coveredFractions(-halfField_, pixelAngle_, activations_);
+  coverage_.coveredFractions(bounds_, activations_);
 }
 
 }  // namespace thyrix

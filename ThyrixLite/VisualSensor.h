@@ -28,9 +28,11 @@ namespace thyrix {
 /// contains or touches the eye covers every pixel.
 ///
 /// The sensor reads the primitives' world pose (`r`, `alpha`) as it is when update() runs; for
-/// the parts of a composed body the simulator keeps it current. update() sizes its buffer for
-/// two intervals per primitive when the number of objects changes, so it allocates nothing on
-/// later calls with the same objects. The sensor refers to its body, which must outlive it.
+/// the parts of a composed body the simulator keeps it current. update() sizes its buffers for
+/// the primitives (two intervals and one culling slot each) when the number of objects changes,
+/// so it allocates nothing on later calls with the same objects (nor after a composed body
+/// gained parts, once it has grown for them). The sensor refers to its body, which must outlive
+/// it.
 class VisualSensor {
  public:
   /// @param body the body the eye is attached to (it is not seen)
@@ -48,7 +50,10 @@ class VisualSensor {
   /// Recomputes every pixel's activation from the primitives of @p objects, seen from the
   /// body's current pose. Objects out of the field of view are culled without trigonometry;
   /// the others' angular extents are clipped to the field of view, merged into their union, and
-  /// the pixels integrated over it in one sweep.
+  /// the pixels integrated over it in one sweep. In a field of view narrower than 0.9 pi the
+  /// direction of a circle comes from fastAtan2() (within 2 units in the last place of
+  /// std::atan2); capsules, and circles in wider fields, get exactly capsuleExtent()'s and
+  /// diskExtent()'s arcs.
   void update(const ObjectList& objects);
 
   /// Activation of each pixel, in [0, 1], as of the last update() (zero before the first).
@@ -77,11 +82,9 @@ class VisualSensor {
   [[nodiscard]] std::pair<real, real> pixelBounds(int i) const;
 
  private:
-  /// True if a disk at @p offset from the eye, of @p radius, lies entirely outside the field of
-  /// view (conservative: a false answer does not mean the disk is seen).
-  [[nodiscard]] bool outside(Vector2 offset, real radius, Vector2 view, Vector2 rightEdge,
-                             Vector2 leftEdge) const;
-  /// As outside(), for the capsule of end-cap centres at @p offset0 and @p offset1 from the eye.
+  /// True if the capsule of end-cap centres at @p offset0 and @p offset1 from the eye, of
+  /// @p radius, lies entirely outside the field of view of edges @p rightEdge and @p leftEdge
+  /// around @p view (conservative: a false answer does not mean the capsule is seen).
   [[nodiscard]] bool outside(Vector2 offset0, Vector2 offset1, real radius, Vector2 view,
                              Vector2 rightEdge, Vector2 leftEdge) const;
 
@@ -94,9 +97,19 @@ class VisualSensor {
   real halfField_;  // half the field of view
   real cosHalfField_;
   real sinHalfField_;
+  /// A primitive that update()'s culling let through, and its centre's offset from the eye.
+  struct Candidate {
+    const Primitive* primitive;
+    Vector2 offset;
+  };
+
   std::vector<real> activations_;
+  // The pixels' bounds relative to the view, -halfField_ + i pixelAngle_ for i in [0, n]:
+  // fixed, so update() does not recompute them.
+  std::vector<real> bounds_;
   AngularCoverage coverage_;
-  std::size_t objectsSized_ = 0;  // the number of objects coverage_ was last sized for
+  std::vector<Candidate> candidates_;  // update()'s culled primitives, one slot per primitive
+  std::size_t objectsSized_ = 0;       // the number of objects coverage_ was last sized for
 };
 
 }  // namespace thyrix

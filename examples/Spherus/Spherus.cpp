@@ -55,8 +55,7 @@ void Spherus::updateSensors(const World& world) {
   for (VisualSensor& eye : eyes_) eye.update(world.objects);
 }
 
-void Spherus::readSensors() {
-  const Vector2 f = forward();
+void Spherus::readSensors(Vector2 f) {
   const real fullSpeed = parameters_.maxForce / parameters_.mass;
   const Circle* circles[2] = {left_, right_};
   for (int c = 0; c < 2; ++c) {
@@ -72,18 +71,20 @@ void Spherus::readSensors() {
   sensors_[sensorCount - 1] = unit(link_->length() / parameters_.maxLinkLength);
 }
 
-void Spherus::applyEffectors() {
+void Spherus::applyEffectors(Vector2 f) {
   for (real& e : effectors_) e = unit(e);
-  const Vector2 f = forward();
   left_->externalForce += f * (parameters_.maxForce * (effectors_[0] - effectors_[1]));
   right_->externalForce += f * (parameters_.maxForce * (effectors_[2] - effectors_[3]));
   link_->setRestLength(effectors_[4] * parameters_.maxLinkLength);
 }
 
 void Spherus::control() {
-  readSensors();
+  // The circles do not move between reading the sensors and applying the effectors: one
+  // forward direction (a square root and a division) serves both.
+  const Vector2 f = forward();
+  readSensors(f);
   if (controller_) controller_->control(sensors_, effectors_);
-  applyEffectors();
+  applyEffectors(f);
 }
 
 void Spherus::draw(GUI& gui) const {

@@ -76,8 +76,10 @@ class Spherus : public Elastoid {
   [[nodiscard]] std::string typeName() const override { return "Spherus"; }
 
  private:
-  void readSensors();
-  void applyEffectors();
+  /// Copies the sensor values, with the speeds along the forward direction @p f.
+  void readSensors(Vector2 f);
+  /// Clamps the effectors and applies them, the rockets along the forward direction @p f.
+  void applyEffectors(Vector2 f);
 
   Parameters parameters_;
   std::unique_ptr<Controller> controller_;
