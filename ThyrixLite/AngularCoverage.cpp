@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 
 namespace thyrix {
 namespace {
@@ -27,51 +26,6 @@ real halfAngle(real radius, real distance) {
 real angleBetween(Vector2 from, Vector2 to) { return std::atan2(cross(from, to), dot(from, to)); }
 
 }  // namespace
-
-real fastAtan2(real y, real x) {
-  const double ay = std::abs(static_cast<double>(y));
-  const double ax = std::abs(static_cast<double>(x));
-  // Zero, infinite or NaN components: rare, and the reduction below would get them wrong.
-  constexpr double infinity = std::numeric_limits<double>::infinity();
-  if (!(ax > 0 && ax < infinity && ay > 0 && ay < infinity)) return std::atan2(y, x);
-  const double big = std::max(ax, ay);
-  const double small = std::min(ax, ay);
-  // atan(small / big), in [0, pi / 4], as Cephes' atan(): below 0.66 directly, above it as
-  // pi / 4 + atan((t - 1) / (t + 1)), whose argument is computed from the components (one
-  // rounding instead of two).
-  constexpr double pio4 = 7.85398163397448309616e-1;
-  constexpr double moreBits = 6.123233995736765886130e-17;  // pi / 2 - double(pi / 2)
-  double base = 0;
-  double extra = 0;
-  double t = 0;
-  if (small <= 0.66 * big) {
-    t = small / big;
-  } else {
-    base = pio4;
-    extra = 0.5 * moreBits;
-    t = (small - big) / (small + big);
-  }
-  const double z = t * t;
-  const double p = (((-8.750608600031904122785e-1 * z - 1.615753718733365076637e1) * z -
-                     7.500855792314704667340e1) *
-                        z -
-                    1.228866684490136173410e2) *
-                       z -
-                   6.485021904942025371773e1;
-  const double q = ((((z + 2.485846490142306297962e1) * z + 1.650270098316988542046e2) * z +
-                     4.328810604912902668951e2) *
-                        z +
-                    4.853903996359136964868e2) *
-                       z +
-                   1.945506571482613964425e2;
-  double angle = base + (t * (z * p / q) + t + extra);
-  // Back to the octant of (x, y).
-  constexpr double pio2 = 1.57079632679489661923;
-  constexpr double pi = 3.14159265358979323846;
-  if (ay > ax) angle = pio2 - angle + moreBits;
-  if (x < 0) angle = pi - angle + 2 * moreBits;
-  return static_cast<real>(std::signbit(y) ? -angle : angle);
-}
 
 AngularExtent splitAtPi(real begin, real end) {
   AngularExtent extent;

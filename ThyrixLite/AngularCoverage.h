@@ -43,13 +43,6 @@ struct AngularExtent {
   }
 };
 
-/// The angle of the vector (@p x, @p y), as std::atan2(@p y, @p x) in [-pi, pi], computed
-/// with Cephes' rational approximation of atan (one division for the reduced argument, one for
-/// the approximation) in double precision: within a few units in the last place of
-/// std::atan2 (AngularCoverageTest measures it), at a third of glibc's instructions. Zero,
-/// infinite and NaN arguments are passed on to std::atan2.
-real fastAtan2(real y, real x);
-
 /// The arc of directions from angle @p begin to angle @p end (`begin <= end`, any real values)
 /// as intervals within [-pi, pi]: the arc is first shifted by a multiple of 2 pi so that its
 /// middle lies in [-pi, pi], then split at +-pi if it crosses it. An arc of 2 pi or more gives

@@ -161,13 +161,11 @@ void VisualSensor::update(const ObjectList& objects) {
     const real radius = primitive->radius();
     if (primitive->shapeType() == ShapeType::Circle) {
       if (narrow) {
-        // diskExtent() and splitAtPi() inlined: in a field narrower than pi the pieces
-        // splitAtPi() makes of an arc crossing +-pi (or its shift of an arc whose rounded
-        // middle passes +-pi) lie outside the field, so clipping the unsplit arc gives the
-        // same intervals. The direction comes from fastAtan2() (within 2 units in the last
-        // place of std::atan2, a third of its cost), so the ends of the arc may differ from
-        // diskExtent()'s by a few units in the last place (VisualSensorTest's
-        // MatchesTheExtentFunctions checks the activations against it).
+        // diskExtent() and splitAtPi() inlined with the same arithmetic, bit for bit: in a
+        // field narrower than pi the pieces splitAtPi() makes of an arc crossing +-pi (or its
+        // shift of an arc whose rounded middle passes +-pi) lie outside the field, so clipping
+        // the unsplit arc gives the same intervals (VisualSensorTest's
+        // MatchesTheExtentFunctionsBitForBit checks).
         const Vector2 offset = candidates_[k].offset;
         const real distanceSquared = offset.lengthSquared();
         if (distanceSquared <= radius * radius) {
@@ -175,7 +173,7 @@ void VisualSensor::update(const ObjectList& objects) {
           return;
         }
         const real half = std::asin(std::min(real(1), radius / std::sqrt(distanceSquared)));
-        const real direction = fastAtan2(cross(view, offset), dot(view, offset));
+        const real direction = std::atan2(cross(view, offset), dot(view, offset));
         coverage_.add(AngularInterval{std::max(direction - half, -halfField),
                                       std::min(direction + half, halfField)});
       } else if (!addExtent(diskExtent(eye, view, primitive->r, radius))) {
