@@ -50,10 +50,8 @@ class VisualSensor {
   /// Recomputes every pixel's activation from the primitives of @p objects, seen from the
   /// body's current pose. Objects out of the field of view are culled without trigonometry;
   /// the others' angular extents are clipped to the field of view, merged into their union, and
-  /// the pixels integrated over it in one sweep. In a field of view narrower than 0.9 pi the
-  /// direction of a circle comes from fastAtan2() (within 2 units in the last place of
-  /// std::atan2); capsules, and circles in wider fields, get exactly capsuleExtent()'s and
-  /// diskExtent()'s arcs.
+  /// the pixels integrated over it in one sweep. The arcs are exactly capsuleExtent()'s and
+  /// diskExtent()'s.
   void update(const ObjectList& objects);
 
   /// Activation of each pixel, in [0, 1], as of the last update() (zero before the first).
