@@ -35,6 +35,17 @@ bool ownShapesMayTouch(const MultiBodyObject* multi, std::uint32_t first, std::u
   return multi != nullptr && multi->selfCollision().mayTouch(a - first, b - first);
 }
 
+/// Whether circles @p a and @p b (Simulator::ShapeGeometry, private: deduced) are too far
+/// apart to touch, margins included. Most candidate pairs of a crowd are: a conservative test
+/// on squared distances (no square root, no call) drops them; the rest get the exact test.
+template <class Geometry>
+bool circlesOutOfReach(const Geometry& a, const Geometry& b) {
+  const real margin = std::min(a.margin, b.margin) + a.travel + b.travel;
+  const Vector2 d = b.p0 - a.p0;
+  const real reach = (a.radius + b.radius + margin) * (1 + 64 * realEpsilon);
+  return d.lengthSquared() > reach * reach;
+}
+
 }  // namespace
 
 // Inline: called from updateGeometry, the only caller, for the unmoved shapes of a composed
@@ -278,6 +289,12 @@ void Simulator::detectContacts() {
     if (body == shapes_[b].body &&
         !ownShapesMayTouch(multiBodies_[body], bodyStates_[body].firstShape, a, b))
       continue;
+    // Two circles out of reach have no contact, fresh or reused: most candidate pairs of a
+    // crowd are, and are dropped here by addContacts' own test (the same bits), before its call
+    // and its large frame (it has room for the manifold of every pair of shape types).
+    if (shapes_[a].type == ShapeType::Circle && shapes_[b].type == ShapeType::Circle &&
+        circlesOutOfReach(geometry_[a], geometry_[b]))
+      continue;
     if (reuse && (shapeMoved_[a] | shapeMoved_[b]) == 0)
       reuseContacts(a, b);
     else
@@ -391,11 +408,7 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
       break;
     case ShapeType::Circle:
       if (b.type == ShapeType::Circle) {
-        // Most candidate pairs of a crowd are out of reach: a conservative test on squared
-        // distances (no square root, no call) drops them; the rest get the exact test.
-        const Vector2 d = gb.p0 - ga.p0;
-        const real reach = (ga.radius + gb.radius + margin) * (1 + 64 * realEpsilon);
-        if (d.lengthSquared() > reach * reach) return;
+        if (circlesOutOfReach(ga, gb)) return;
         append(collideCircles(ga.p0, ga.radius, gb.p0, gb.radius, margin));
       } else {
         append(collideCircleCapsule(ga.p0, ga.radius, gb.p0, gb.p1, gb.radius, margin));
