@@ -35,6 +35,17 @@ std::uint32_t bucketCountFor(std::uint32_t count) {
   return buckets;
 }
 
+/// floor(@p q) as an integer, for q in the range of std::int64_t: the same value as
+/// `static_cast<std::int64_t>(std::floor(q))`, without the library call std::floor is without
+/// SSE4.1 (and the spills around it). The truncation of a real is a real, so comparing it
+/// back is exact.
+std::int64_t floorToInt(real q) {
+  const auto t = static_cast<std::int64_t>(q);
+  // (Unsigned: no overflow where q is out of range, already undefined in the cast.)
+  return static_cast<std::int64_t>(static_cast<std::uint64_t>(t) -
+                                   std::uint64_t{static_cast<real>(t) > q});
+}
+
 }  // namespace
 
 void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
@@ -126,6 +137,58 @@ std::uint64_t overlapRow(const BoundingBox& box, const BoxColumns& soa, std::uin
   return row;
 #endif
 }
+
+/// BoundingBox::overlaps of one box against others, as 1 or 0 without a branch (whether
+/// candidates of a grid overlap is random to the branch predictor).
+template <class Real>
+class OverlapTest {
+ public:
+  explicit OverlapTest(const BoundingBox& box) : box_(box) {}
+  std::size_t operator()(const BoundingBox& o) const {
+    return std::size_t{(box_.lower.x <= o.upper.x) & (o.lower.x <= box_.upper.x) &
+                       (box_.lower.y <= o.upper.y) & (o.lower.y <= box_.upper.y)};
+  }
+
+ private:
+  BoundingBox box_;
+};
+
+#if defined(__SSE2__)
+// The same comparisons two or four at a time: lower corners against upper corners (a
+// comparison with NaN is false, as in C++). A box is its corners' coordinates in a row.
+template <>
+class OverlapTest<double> {
+ public:
+  explicit OverlapTest(const BoundingBox& box)
+      : lower_(_mm_loadu_pd(row(box))), upper_(_mm_loadu_pd(row(box) + 2)) {}
+  std::size_t operator()(const BoundingBox& o) const {
+    const __m128d hit = _mm_and_pd(_mm_cmple_pd(lower_, _mm_loadu_pd(row(o) + 2)),
+                                   _mm_cmple_pd(_mm_loadu_pd(row(o)), upper_));
+    return std::size_t{_mm_movemask_pd(hit) == 3};
+  }
+
+ private:
+  static const double* row(const BoundingBox& box) { return reinterpret_cast<const double*>(&box); }
+  __m128d lower_;
+  __m128d upper_;
+};
+
+template <>
+class OverlapTest<float> {
+ public:
+  explicit OverlapTest(const BoundingBox& box)
+      : box_(_mm_loadu_ps(reinterpret_cast<const float*>(&box))) {}
+  std::size_t operator()(const BoundingBox& o) const {
+    const __m128 other = _mm_loadu_ps(reinterpret_cast<const float*>(&o));
+    // (box lower x, y, other lower x, y) <= (other upper x, y, box upper x, y)
+    const __m128 hit = _mm_cmple_ps(_mm_movelh_ps(box_, other), _mm_movehl_ps(box_, other));
+    return std::size_t{_mm_movemask_ps(hit) == 15};
+  }
+
+ private:
+  __m128 box_;
+};
+#endif
 
 /// Bits above @p i.
 std::uint64_t above(std::uint32_t i) { return ~std::uint64_t{0} << i << 1; }
@@ -227,8 +290,8 @@ void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, std::vector
       continue;
     }
     const Vector2 centre = (box.lower + box.upper) * real(0.5);
-    cellX_[i] = static_cast<std::int64_t>(std::floor(centre.x / cellSize));
-    cellY_[i] = static_cast<std::int64_t>(std::floor(centre.y / cellSize));
+    cellX_[i] = floorToInt(centre.x / cellSize);
+    cellY_[i] = floorToInt(centre.y / cellSize);
     cellOfBox_[i] = 0;
     lowX = std::min(lowX, cellX_[i]);
     lowY = std::min(lowY, cellY_[i]);
@@ -283,22 +346,46 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
 
   // The same visiting order as the hashed grid: own cell (higher indices), then the cells
   // (x+1, y-1), (x+1, y), (x+1, y+1), then (x, y+1), each by increasing index.
-  const auto testRange = [&](std::uint32_t i, std::uint32_t begin, std::uint32_t end) {
-    for (std::uint32_t k = begin; k < end; ++k) {
-      const std::uint32_t j = sortedBoxes_[k];
-      if (boxes[i].overlaps(boxes[j])) pairs.push_back({std::min(i, j), std::max(i, j)});
-    }
-  };
+  // Whether a candidate overlaps is random to the branch predictor: each candidate pair is
+  // written at the end of the output and kept (the end advanced) when it overlaps, without a
+  // branch. The output is therefore sized ahead, for every candidate of the box at hand.
+  std::size_t n = pairs.size();
+  pairs.resize(n + 2 * std::size_t{count} + 64);
+  BoxPair* out = pairs.data();
+  const BoundingBox* const all = boxes.data();
+  const std::uint32_t* const start = cellStart_.data();
+  const std::uint32_t* const sorted = sortedBoxes_.data();
   for (std::uint32_t i = 0; i < count; ++i) {
     const std::uint32_t own = cellOfBox_[i];
     if (own == oversizedMark) continue;
-    for (std::uint32_t k = cellStart_[own]; k < cellStart_[own + 1]; ++k) {
-      const std::uint32_t j = sortedBoxes_[k];
-      if (j > i && boxes[i].overlaps(boxes[j])) pairs.push_back({i, j});
+    const std::uint32_t ownBegin = start[own];
+    const std::uint32_t aboveBegin = start[own + 1];
+    const std::uint32_t aboveEnd = start[own + 2];
+    const std::uint32_t nextBegin = start[own + stride - 1];
+    const std::uint32_t nextEnd = start[own + stride + 2];
+    const std::size_t candidates = (aboveEnd - ownBegin) + (nextEnd - nextBegin);
+    if (n + candidates > pairs.size()) {  // rare: the output doubles
+      pairs.resize(std::max(2 * pairs.size(), n + candidates));
+      out = pairs.data();
     }
-    testRange(i, cellStart_[own + stride - 1], cellStart_[own + stride + 2]);
-    testRange(i, cellStart_[own + 1], cellStart_[own + 2]);
+    const OverlapTest<real> overlapsBox(all[i]);
+    const auto overlaps = [&](std::uint32_t j) { return overlapsBox(all[j]); };
+    for (std::uint32_t k = ownBegin; k < aboveBegin; ++k) {
+      const std::uint32_t j = sorted[k];
+      out[n] = {i, j};
+      n += std::size_t{j > i} & overlaps(j);
+    }
+    const auto testRange = [&](std::uint32_t begin, std::uint32_t end) {
+      for (std::uint32_t k = begin; k < end; ++k) {
+        const std::uint32_t j = sorted[k];
+        out[n] = {std::min(i, j), std::max(i, j)};
+        n += overlaps(j);
+      }
+    };
+    testRange(nextBegin, nextEnd);
+    testRange(aboveBegin, aboveEnd);
   }
+  pairs.resize(n);
 }
 
 void BroadPhase::findPairsInHashedGrid(std::span<const BoundingBox> boxes,
