@@ -169,7 +169,8 @@ class Simulator : public World {
   void addCachedBox(std::uint32_t shape, Vector2& boxMin, Vector2& boxMax) const;
   bool updateShape(std::uint32_t shape, bool poseKnown, Vector2& lower, Vector2& upper);
   void findBorderContacts(bool reuse);
-  void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);
+  /// With @p inReach, two circles are known to pass the rough test of circlesOutOfReach.
+  void addContacts(std::uint32_t shapeA, std::uint32_t shapeB, bool inReach = false);
   void reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void indexPreviousContacts();
   void clearContactLists();

@@ -289,16 +289,16 @@ void Simulator::detectContacts() {
     if (body == shapes_[b].body &&
         !ownShapesMayTouch(multiBodies_[body], bodyStates_[body].firstShape, a, b))
       continue;
-    // Two circles out of reach have no contact, fresh or reused: most candidate pairs of a
-    // crowd are, and are dropped here by addContacts' own test (the same bits), before its call
-    // and its large frame (it has room for the manifold of every pair of shape types).
-    if (shapes_[a].type == ShapeType::Circle && shapes_[b].type == ShapeType::Circle &&
-        circlesOutOfReach(geometry_[a], geometry_[b]))
-      continue;
-    if (reuse && (shapeMoved_[a] | shapeMoved_[b]) == 0)
+    if (reuse && (shapeMoved_[a] | shapeMoved_[b]) == 0) {
       reuseContacts(a, b);
-    else
+    } else if (shapes_[a].type == ShapeType::Circle && shapes_[b].type == ShapeType::Circle) {
+      // Most candidate pairs of a crowd are two circles out of reach: addContacts' own test
+      // (the same bits) drops them here, before its call and its large frame (it has room for
+      // the manifold of every pair of shape types); it does not test the others again.
+      if (!circlesOutOfReach(geometry_[a], geometry_[b])) addContacts(a, b, true);
+    } else {
       addContacts(a, b);
+    }
   }
   findBorderContacts(reuse);
   contactsComplete_ = fromEmpty;
@@ -307,34 +307,91 @@ void Simulator::detectContacts() {
   for (const std::uint32_t index : customObjects_) objects[index].updateSensors(*this);
 }
 
+namespace {
+
+/// A border's line as its reach test reads it.
+struct BorderLine {
+  Vector2 point;
+  Vector2 normal;
+  Vector2 absNormal;  // |normal.x|, |normal.y|
+};
+
+/// Up to this many unmoved borders have their reach updated together (the piles have 3).
+constexpr std::size_t fusedBorders = 4;
+
+/// 1 when @p box (margin included) reaches behind @p line, that is, unless it lies entirely
+/// on the free side; else 0.
+std::uint64_t reachesBehind(const BorderLine& line, Vector2 centre, Vector2 half) {
+  const real extent = line.absNormal.x * half.x + line.absNormal.y * half.y;
+  return std::uint64_t{dot(centre - line.point, line.normal) - extent <= 0};
+}
+
+}  // namespace
+
 void Simulator::findBorderContacts(bool reuse) {
   // Borders skip the broad phase: each meets every grid shape whose box reaches behind its
   // line. Which shapes do is kept as one bit per grid shape and border, retested only for
   // moved shapes; the pairs are visited in the same order either way (border, then shape).
   const std::size_t count = gridShapes_.size();
   const std::size_t words = (count + 63) / 64;
+  const std::size_t borders = borderShapes_.size();
   const bool remembered = restSkipping && reachShapes_ == count;
   reachShapes_ = count;
-  borderReach_.resize(borderShapes_.size() * words);
-  for (std::size_t k = 0; k < borderShapes_.size(); ++k) {
-    const std::uint32_t border = borderShapes_[k];
-    const bool borderMoved = !remembered || shapeMoved_[border] != 0;
-    const Vector2 point = geometry_[border].p0;
+  borderReach_.resize(borders * words);
+  const auto lineOf = [this](std::uint32_t border) {
     const Vector2 normal = geometry_[border].p1;
+    return BorderLine{geometry_[border].p0, normal, {std::abs(normal.x), std::abs(normal.y)}};
+  };
+  bool anyBorderMoved = !remembered;
+  for (std::size_t k = 0; k < borders && !anyBorderMoved; ++k)
+    anyBorderMoved = shapeMoved_[borderShapes_[k]] != 0;
+  const auto moved = [&](std::size_t k) {
+    return anyBorderMoved && (!remembered || shapeMoved_[borderShapes_[k]] != 0);
+  };
+  if (!anyBorderMoved && borders <= fusedBorders) {
+    // The common case, borders that stay: every border retests the moved shapes, so each
+    // moved shape's box is read once for all of them.
+    BorderLine lines[fusedBorders];
+    for (std::size_t k = 0; k < borders; ++k) lines[k] = lineOf(borderShapes_[k]);
     for (std::size_t w = 0; w < words; ++w) {
-      const std::uint64_t retest = borderMoved ? wordMask(w, count) : gridMovedBits_[w];
-      std::uint64_t& reach = borderReach_[k * words + w];
-      reach &= ~retest;
+      const std::uint64_t retest = gridMovedBits_[w];
+      if (retest == 0) continue;
+      std::uint64_t reach[fusedBorders];
+      for (std::size_t k = 0; k < borders; ++k) reach[k] = borderReach_[k * words + w] & ~retest;
       for (std::uint64_t bits = retest; bits != 0; bits &= bits - 1) {
         const std::size_t i = 64 * w + static_cast<std::size_t>(std::countr_zero(bits));
-        // Out of reach when the box (margin included) lies entirely on the free side.
         const BoundingBox& box = gridBoxes_[i];
         const Vector2 centre = (box.lower + box.upper) * real(0.5);
         const Vector2 half = (box.upper - box.lower) * real(0.5);
-        const real extent = std::abs(normal.x) * half.x + std::abs(normal.y) * half.y;
-        if (dot(centre - point, normal) - extent <= 0) reach |= bits & (~bits + 1);
+        const std::uint64_t bit = bits & (~bits + 1);
+        for (std::size_t k = 0; k < borders; ++k)
+          reach[k] |= bit & (std::uint64_t{0} - reachesBehind(lines[k], centre, half));
       }
-      for (std::uint64_t bits = reach; bits != 0; bits &= bits - 1) {
+      for (std::size_t k = 0; k < borders; ++k) borderReach_[k * words + w] = reach[k];
+    }
+  } else {
+    for (std::size_t k = 0; k < borders; ++k) {
+      const bool borderMoved = moved(k);
+      const BorderLine line = lineOf(borderShapes_[k]);
+      for (std::size_t w = 0; w < words; ++w) {
+        const std::uint64_t retest = borderMoved ? wordMask(w, count) : gridMovedBits_[w];
+        std::uint64_t& reach = borderReach_[k * words + w];
+        reach &= ~retest;
+        for (std::uint64_t bits = retest; bits != 0; bits &= bits - 1) {
+          const std::size_t i = 64 * w + static_cast<std::size_t>(std::countr_zero(bits));
+          const BoundingBox& box = gridBoxes_[i];
+          const Vector2 centre = (box.lower + box.upper) * real(0.5);
+          const Vector2 half = (box.upper - box.lower) * real(0.5);
+          if (reachesBehind(line, centre, half) != 0) reach |= bits & (~bits + 1);
+        }
+      }
+    }
+  }
+  for (std::size_t k = 0; k < borders; ++k) {
+    const std::uint32_t border = borderShapes_[k];
+    const bool borderMoved = moved(k);
+    for (std::size_t w = 0; w < words; ++w) {
+      for (std::uint64_t bits = borderReach_[k * words + w]; bits != 0; bits &= bits - 1) {
         const std::uint32_t shape =
             gridShapes_[64 * w + static_cast<std::size_t>(std::countr_zero(bits))];
         if (reuse && !borderMoved && shapeMoved_[shape] == 0)
@@ -378,7 +435,7 @@ void Simulator::indexPreviousContacts() {
   previousIndexed_ = true;
 }
 
-void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
+void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB, bool inReach) {
   if (shapes_[shapeB].type < shapes_[shapeA].type) std::swap(shapeA, shapeB);
   const Shape& a = shapes_[shapeA];
   const Shape& b = shapes_[shapeB];
@@ -408,7 +465,7 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
       break;
     case ShapeType::Circle:
       if (b.type == ShapeType::Circle) {
-        if (circlesOutOfReach(ga, gb)) return;
+        if (!inReach && circlesOutOfReach(ga, gb)) return;
         append(collideCircles(ga.p0, ga.radius, gb.p0, gb.radius, margin));
       } else {
         append(collideCircleCapsule(ga.p0, ga.radius, gb.p0, gb.p1, gb.radius, margin));
