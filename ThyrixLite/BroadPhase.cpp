@@ -65,8 +65,17 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const s
   }
   rememberedCount_ = 0;
   reserveFor(count);
-  if (allowSweep && sweep_.findPairs(boxes, sweepTestsPerBox, pairs)) return;
-  findPairsInGrid(boxes, pairs);
+  // One pass gathers what the sweep estimates its cost from and what sizes the grid's cells.
+  SweepAndPrune::Extents extents;
+  real extentSum = 0;
+  real maxExtent = 0;
+  for (const BoundingBox& box : boxes) {
+    extents.add(box);
+    extentSum += extent(box);
+    maxExtent = std::max(maxExtent, extent(box));
+  }
+  if (allowSweep && sweep_.findPairs(boxes, extents, sweepTestsPerBox, pairs)) return;
+  findPairsInGrid(boxes, extentSum, maxExtent, pairs);
 }
 
 namespace {
@@ -260,17 +269,12 @@ void BroadPhase::reserveFor(std::uint32_t count) {
   reservedCount_ = count;
 }
 
-void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
+void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, real extentSum, real maxExtent,
+                                 std::vector<BoxPair>& pairs) {
   const auto count = static_cast<std::uint32_t>(boxes.size());
   // Cells as small as the largest box allows (about one box per cell for similar sizes), but
   // no larger than twice the mean: rare big boxes are handled as oversized instead.
-  real meanExtent = 0;
-  real maxExtent = 0;
-  for (const BoundingBox& box : boxes) {
-    meanExtent += extent(box);
-    maxExtent = std::max(maxExtent, extent(box));
-  }
-  meanExtent /= static_cast<real>(count);
+  const real meanExtent = extentSum / static_cast<real>(count);
   const real cellSize = std::max(std::min(maxExtent, 2 * meanExtent), realEpsilon);
 
   // Cell coordinates of the regular boxes, and the rectangle of cells they span.

@@ -68,7 +68,10 @@ class BroadPhase {
  private:
   void findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint64_t moved, bool remembered,
                          std::vector<BoxPair>& pairs);
-  void findPairsInGrid(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
+  /// The grid's pairs; @p extentSum and @p maxExtent are the sum and the largest of the
+  /// boxes' extents (the larger side of each), summed in index order.
+  void findPairsInGrid(std::span<const BoundingBox> boxes, real extentSum, real maxExtent,
+                       std::vector<BoxPair>& pairs);
   void findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::int64_t lowX,
                             std::int64_t lowY, std::int64_t columns, std::int64_t rows,
                             std::vector<BoxPair>& pairs);
