@@ -138,7 +138,8 @@ void BroadPhase::reserveFor(std::uint32_t count) {
   const auto cells = static_cast<std::size_t>(denseCellsPerBox * count + denseCellsMargin);
   cellStart_.reserve(std::max<std::size_t>(cells, bucketCountFor(count)) + 1);
   cellCursor_.reserve(cellStart_.capacity());
-  for (auto* buffer : {&cellOfBox_, &sortedBoxes_, &oversized_}) buffer->reserve(count);
+  for (auto* buffer : {&cellOfBox_, &sortedBoxes_, &slotOfBox_, &oversized_})
+    buffer->reserve(count);
   cellX_.reserve(count);
   cellY_.reserve(count);
   sweep_.reserve(count);
@@ -198,7 +199,7 @@ void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, real extent
   }
 }
 
-void BroadPhase::sortByCell(std::uint32_t count, std::uint32_t cellCount) {
+void BroadPhase::sortByCell(std::uint32_t count, std::uint32_t cellCount, bool withSlots) {
   // Counting sort in index order, so each cell lists its boxes by increasing index.
   cellStart_.assign(cellCount + 1, 0);
   for (std::uint32_t i = 0; i < count; ++i)
@@ -206,8 +207,18 @@ void BroadPhase::sortByCell(std::uint32_t count, std::uint32_t cellCount) {
   for (std::uint32_t c = 0; c < cellCount; ++c) cellStart_[c + 1] += cellStart_[c];
   cellCursor_.assign(cellStart_.begin(), cellStart_.end() - 1);
   sortedBoxes_.resize(cellStart_[cellCount]);
-  for (std::uint32_t i = 0; i < count; ++i)
-    if (cellOfBox_[i] != oversizedMark) sortedBoxes_[cellCursor_[cellOfBox_[i]]++] = i;
+  if (!withSlots) {
+    for (std::uint32_t i = 0; i < count; ++i)
+      if (cellOfBox_[i] != oversizedMark) sortedBoxes_[cellCursor_[cellOfBox_[i]]++] = i;
+    return;
+  }
+  slotOfBox_.resize(count);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    if (cellOfBox_[i] == oversizedMark) continue;
+    const std::uint32_t slot = cellCursor_[cellOfBox_[i]]++;
+    sortedBoxes_[slot] = i;
+    slotOfBox_[i] = slot;
+  }
 }
 
 void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::int64_t lowX,
@@ -222,10 +233,11 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
   for (std::uint32_t i = 0; i < count; ++i)
     if (cellOfBox_[i] != oversizedMark)
       cellOfBox_[i] = static_cast<std::uint32_t>((cellX_[i] - lowX) * rows + (cellY_[i] - lowY));
-  sortByCell(count, cellCount);
+  sortByCell(count, cellCount, true);
 
-  // The same visiting order as the hashed grid: own cell (higher indices), then the cells
-  // (x+1, y-1), (x+1, y), (x+1, y+1), then (x, y+1), each by increasing index.
+  // The same visiting order as the hashed grid: own cell (higher indices: those after the
+  // box itself, as a cell lists its boxes by index), then the cells (x+1, y-1), (x+1, y),
+  // (x+1, y+1), then (x, y+1), each by increasing index.
   // Whether a candidate overlaps is random to the branch predictor: each candidate pair is
   // written at the end of the output and kept (the end advanced) when it overlaps, without a
   // branch. The output is therefore sized ahead, for every candidate of the box at hand.
@@ -238,7 +250,7 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
   for (std::uint32_t i = 0; i < count; ++i) {
     const std::uint32_t own = cellOfBox_[i];
     if (own == oversizedMark) continue;
-    const std::uint32_t ownBegin = start[own];
+    const std::uint32_t ownBegin = slotOfBox_[i] + 1;
     const std::uint32_t aboveBegin = start[own + 1];
     const std::uint32_t aboveEnd = start[own + 2];
     const std::uint32_t nextBegin = start[own + stride - 1];
@@ -253,7 +265,7 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
     for (std::uint32_t k = ownBegin; k < aboveBegin; ++k) {
       const std::uint32_t j = sorted[k];
       out[n] = {i, j};
-      n += std::size_t{j > i} & overlaps(j);
+      n += overlaps(j);
     }
     const auto testRange = [&](std::uint32_t begin, std::uint32_t end) {
       for (std::uint32_t k = begin; k < end; ++k) {
@@ -275,7 +287,7 @@ void BroadPhase::findPairsInHashedGrid(std::span<const BoundingBox> boxes,
   const std::uint32_t mask = bucketCount - 1;
   for (std::uint32_t i = 0; i < count; ++i)
     if (cellOfBox_[i] != oversizedMark) cellOfBox_[i] = hashCell(cellX_[i], cellY_[i], mask);
-  sortByCell(count, bucketCount);
+  sortByCell(count, bucketCount, false);
 
   // Regular pairs. A box can only overlap boxes whose centres lie in the 3 x 3 cells around
   // its own; visiting its own cell (higher indices only) and the four "forward" cells (all

@@ -78,7 +78,8 @@ class BroadPhase {
   void findPairsInHashedGrid(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
   /// Groups the regular boxes by cellOfBox_ (cells 0 to cellCount - 1) into sortedBoxes_,
   /// with cellStart_ marking each cell's range.
-  void sortByCell(std::uint32_t count, std::uint32_t cellCount);
+  /// With @p withSlots, slotOfBox_ gets each regular box's position in sortedBoxes_.
+  void sortByCell(std::uint32_t count, std::uint32_t cellCount, bool withSlots);
   void reserveFor(std::uint32_t count);
 
   // Few boxes: the corners by coordinate, smallCount + 3 of each (padding for whole vectors)
@@ -99,6 +100,7 @@ class BroadPhase {
   std::vector<std::uint32_t> cellCursor_;    // fill position of each cell during the sort
   std::vector<std::uint32_t> sortedBoxes_;   // regular boxes grouped by cell, by index within
   std::vector<std::uint32_t> oversized_;     // boxes larger than a cell
+  std::vector<std::uint32_t> slotOfBox_;     // position of each box in sortedBoxes_ (dense)
 
   SweepAndPrune sweep_;  // boxes along a line
 };
