@@ -61,18 +61,39 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const s
     findPairsAmongFew(boxes, remembered ? moved[0] : 0, remembered, pairs);
     return;
   }
+  findPairsAmongMany(boxes, pairs);
+}
+
+void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes,
+                                    std::vector<BoxPair>& pairs) {
   rememberedCount_ = 0;
-  reserveFor(count);
-  // One pass gathers what the sweep estimates its cost from and what sizes the grid's cells.
+  reserveFor(static_cast<std::uint32_t>(boxes.size()));
+  // The sweep estimates its cost from the boxes' extents along each axis; the grid sizes its
+  // cells by their larger sides. When the last call took the grid (a pile: the sweep
+  // declines), one pass gathers both; else the grid's pass waits until the sweep declines.
+  // Either way the same sums in the same order: only the work depends on the last call.
   SweepAndPrune::Extents extents;
   real extentSum = 0;
   real maxExtent = 0;
-  for (const BoundingBox& box : boxes) {
-    extents.add(box);
-    extentSum += extent(box);
-    maxExtent = std::max(maxExtent, extent(box));
+  const bool gridExpected = lastTookGrid_ || !allowSweep;
+  if (gridExpected) {
+    for (const BoundingBox& box : boxes) {
+      extents.add(box);
+      extentSum += extent(box);
+      maxExtent = std::max(maxExtent, extent(box));
+    }
+  } else {
+    for (const BoundingBox& box : boxes) extents.add(box);
   }
+  lastTookGrid_ = false;
   if (allowSweep && sweep_.findPairs(boxes, extents, sweepTestsPerBox, pairs)) return;
+  if (!gridExpected) {
+    for (const BoundingBox& box : boxes) {
+      extentSum += extent(box);
+      maxExtent = std::max(maxExtent, extent(box));
+    }
+  }
+  lastTookGrid_ = true;
   findPairsInGrid(boxes, extentSum, maxExtent, pairs);
 }
 

@@ -70,6 +70,13 @@ class BroadPhase {
                          std::vector<BoxPair>& pairs);
   /// The grid's pairs; @p extentSum and @p maxExtent are the sum and the largest of the
   /// boxes' extents (the larger side of each), summed in index order.
+  /// More than smallCount boxes: the sweep or the grid. (Not inlined into findPairs, whose
+  /// few-box calls then keep a light frame.)
+#if defined(__GNUC__)
+  [[gnu::noinline]]
+#endif
+  void
+  findPairsAmongMany(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
   void findPairsInGrid(std::span<const BoundingBox> boxes, real extentSum, real maxExtent,
                        std::vector<BoxPair>& pairs);
   void findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::int64_t lowX,
@@ -102,7 +109,8 @@ class BroadPhase {
   std::vector<std::uint32_t> oversized_;     // boxes larger than a cell
   std::vector<std::uint32_t> slotOfBox_;     // position of each box in sortedBoxes_ (dense)
 
-  SweepAndPrune sweep_;  // boxes along a line
+  SweepAndPrune sweep_;        // boxes along a line
+  bool lastTookGrid_ = false;  // the last call of more than smallCount boxes used the grid
 };
 
 }  // namespace thyrix

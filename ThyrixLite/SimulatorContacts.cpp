@@ -48,18 +48,23 @@ void Simulator::detectContacts() {
   previousIndexed_ = false;
   statistics_.reusedContacts = 0;
   broadPhase_.findPairs(gridBoxes_, gridMovedBits_, pairs_);
+  // A crowd's candidate pairs are mostly out of reach (tested below before the call); the few
+  // boxes of a small world mostly touch when their boxes do, and go straight to addContacts.
+  const bool crowd = gridBoxes_.size() > BroadPhase::smallCount;
   for (const BoxPair& pair : pairs_) {
     const std::uint32_t a = gridShapes_[pair.first];
     const std::uint32_t b = gridShapes_[pair.second];
     // Pairs within one body are settled here, without a call: a chain's neighbouring links
     // overlap in every step and never touch.
-    const std::uint32_t body = shapes_[a].body;
-    if (body == shapes_[b].body &&
+    const Shape& shapeA = shapes_[a];
+    const Shape& shapeB = shapes_[b];
+    const std::uint32_t body = shapeA.body;
+    if (body == shapeB.body &&
         !ownShapesMayTouch(multiBodies_[body], bodyStates_[body].firstShape, a, b))
       continue;
     if (reuse && (shapeMoved_[a] | shapeMoved_[b]) == 0) {
       reuseContacts(a, b);
-    } else if (shapes_[a].type == ShapeType::Circle && shapes_[b].type == ShapeType::Circle) {
+    } else if (crowd && shapeA.type == ShapeType::Circle && shapeB.type == ShapeType::Circle) {
       // Most candidate pairs of a crowd are two circles out of reach: addContacts' own test
       // (the same bits) drops them here, before its call and its large frame (it has room for
       // the manifold of every pair of shape types); it does not test the others again.
@@ -106,6 +111,7 @@ void Simulator::findBorderContacts(bool reuse) {
   const bool remembered = restSkipping && reachShapes_ == count;
   reachShapes_ = count;
   borderReach_.resize(borders * words);
+  if (borders == 0) return;  // (the loops below would still visit the moved shapes)
   const auto lineOf = [this](std::uint32_t border) {
     const Vector2 normal = geometry_[border].p1;
     return BorderLine{geometry_[border].p0, normal, {std::abs(normal.x), std::abs(normal.y)}};

@@ -71,7 +71,7 @@ inline bool Simulator::updateShape(std::uint32_t s, bool poseKnown, Vector2& low
       return false;  // unbounded: no box, not in the grid
     case ShapeType::Circle:
       g.p0 = r;  // a circle's geometry does not depend on its angle
-      g.p1 = r;  // (read by the travel below as a capsule's second end)
+      g.p1 = r;  // (unread: lets the box below be the capsule's, min and max of equal ends)
       break;
     case ShapeType::Capsule:
       // The half axis turns with the angle only: a capsule that slides keeps it.
@@ -85,14 +85,9 @@ inline bool Simulator::updateShape(std::uint32_t s, bool poseKnown, Vector2& low
   }
   pose.r = r;
   pose.alpha = alpha;
-  // A circle's box is around its centre: the min and max of its two equal ends would be
-  // the same bits (std::min and std::max return the first of equal values, or of a NaN).
-  Vector2 least = r;
-  Vector2 most = r;
-  if (type == ShapeType::Capsule) {
-    least = {std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)};
-    most = {std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)};
-  }
+  // The same boxes as before for a circle: min and max of two equal values are that value.
+  const Vector2 least{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)};
+  const Vector2 most{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)};
   lower = least - Vector2{g.radius, g.radius};
   upper = most + Vector2{g.radius, g.radius};
   const std::uint32_t slot = gridSlot_[s];
