@@ -173,8 +173,7 @@ class Simulator : public World {
   /// false (nothing done) when a border moved or there are more than a few.
   bool findBorderReachTogether(std::size_t words);
   void visitBorderContacts(bool reuse, std::size_t words);
-  /// With @p inReach, two circles are known to pass the rough test of circlesOutOfReach.
-  void addContacts(std::uint32_t shapeA, std::uint32_t shapeB, bool inReach = false);
+  void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void indexPreviousContacts();
   void clearContactLists();

@@ -25,17 +25,6 @@ bool ownShapesMayTouch(const MultiBodyObject* multi, std::uint32_t first, std::u
   return multi != nullptr && multi->selfCollision().mayTouch(a - first, b - first);
 }
 
-/// Whether circles @p a and @p b (Simulator::ShapeGeometry, private: deduced) are too far
-/// apart to touch, margins included. Most candidate pairs of a crowd are: a conservative test
-/// on squared distances (no square root, no call) drops them; the rest get the exact test.
-template <class Geometry>
-bool circlesOutOfReach(const Geometry& a, const Geometry& b) {
-  const real margin = std::min(a.margin, b.margin) + a.travel + b.travel;
-  const Vector2 d = b.p0 - a.p0;
-  const real reach = (a.radius + b.radius + margin) * (1 + 64 * realEpsilon);
-  return d.lengthSquared() > reach * reach;
-}
-
 }  // namespace
 
 void Simulator::detectContacts() {
@@ -48,30 +37,19 @@ void Simulator::detectContacts() {
   previousIndexed_ = false;
   statistics_.reusedContacts = 0;
   broadPhase_.findPairs(gridBoxes_, gridMovedBits_, pairs_);
-  // A crowd's candidate pairs are mostly out of reach (tested below before the call); the few
-  // boxes of a small world mostly touch when their boxes do, and go straight to addContacts.
-  const bool crowd = gridBoxes_.size() > BroadPhase::smallCount;
   for (const BoxPair& pair : pairs_) {
     const std::uint32_t a = gridShapes_[pair.first];
     const std::uint32_t b = gridShapes_[pair.second];
     // Pairs within one body are settled here, without a call: a chain's neighbouring links
     // overlap in every step and never touch.
-    const Shape& shapeA = shapes_[a];
-    const Shape& shapeB = shapes_[b];
-    const std::uint32_t body = shapeA.body;
-    if (body == shapeB.body &&
+    const std::uint32_t body = shapes_[a].body;
+    if (body == shapes_[b].body &&
         !ownShapesMayTouch(multiBodies_[body], bodyStates_[body].firstShape, a, b))
       continue;
-    if (reuse && (shapeMoved_[a] | shapeMoved_[b]) == 0) {
+    if (reuse && (shapeMoved_[a] | shapeMoved_[b]) == 0)
       reuseContacts(a, b);
-    } else if (crowd && shapeA.type == ShapeType::Circle && shapeB.type == ShapeType::Circle) {
-      // Most candidate pairs of a crowd are two circles out of reach: addContacts' own test
-      // (the same bits) drops them here, before its call and its large frame (it has room for
-      // the manifold of every pair of shape types); it does not test the others again.
-      if (!circlesOutOfReach(geometry_[a], geometry_[b])) addContacts(a, b, true);
-    } else {
+    else
       addContacts(a, b);
-    }
   }
   findBorderContacts(reuse);
   contactsComplete_ = fromEmpty;
@@ -226,7 +204,7 @@ void Simulator::indexPreviousContacts() {
   previousIndexed_ = true;
 }
 
-void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB, bool inReach) {
+void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
   if (shapes_[shapeB].type < shapes_[shapeA].type) std::swap(shapeA, shapeB);
   const Shape& a = shapes_[shapeA];
   const Shape& b = shapes_[shapeB];
@@ -256,7 +234,11 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB, bool inR
       break;
     case ShapeType::Circle:
       if (b.type == ShapeType::Circle) {
-        if (!inReach && circlesOutOfReach(ga, gb)) return;
+        // Most candidate pairs of a crowd are out of reach: a conservative test on squared
+        // distances (no square root, no call) drops them; the rest get the exact test.
+        const Vector2 d = gb.p0 - ga.p0;
+        const real reach = (ga.radius + gb.radius + margin) * (1 + 64 * realEpsilon);
+        if (d.lengthSquared() > reach * reach) return;
         append(collideCircles(ga.p0, ga.radius, gb.p0, gb.radius, margin));
       } else {
         append(collideCircleCapsule(ga.p0, ga.radius, gb.p0, gb.p1, gb.radius, margin));
