@@ -1,16 +1,14 @@
+/// @file BroadPhase.cpp
+/// @brief BroadPhase above smallCount boxes: the sweep or the grid (dense or hashed).
 #include <ThyrixLite/BroadPhase.h>
 
 #include <algorithm>
-#include <bit>
-#include <cmath>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 
 namespace thyrix {
 namespace {
-
-static_assert(BroadPhase::smallCount <= 64, "few boxes keep their overlaps in 64-bit masks");
 
 std::uint32_t hashCell(std::int64_t x, std::int64_t y, std::uint32_t mask) {
   const auto h = static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull ^
@@ -35,6 +33,17 @@ std::uint32_t bucketCountFor(std::uint32_t count) {
   return buckets;
 }
 
+/// floor(@p q) as an integer, for q in the range of std::int64_t: the same value as
+/// `static_cast<std::int64_t>(std::floor(q))`, without the library call std::floor is without
+/// SSE4.1 (and the spills around it). The truncation of a real is a real, so comparing it
+/// back is exact.
+std::int64_t floorToInt(real q) {
+  const auto t = static_cast<std::int64_t>(q);
+  // (Unsigned: no overflow where q is out of range, already undefined in the cast.)
+  return static_cast<std::int64_t>(static_cast<std::uint64_t>(t) -
+                                   std::uint64_t{static_cast<real>(t) > q});
+}
+
 }  // namespace
 
 void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
@@ -52,136 +61,96 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const s
     findPairsAmongFew(boxes, remembered ? moved[0] : 0, remembered, pairs);
     return;
   }
+  findPairsAmongMany(boxes, pairs);
+}
+
+void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes,
+                                    std::vector<BoxPair>& pairs) {
   rememberedCount_ = 0;
-  reserveFor(count);
-  if (allowSweep && sweep_.findPairs(boxes, sweepTestsPerBox, pairs)) return;
-  findPairsInGrid(boxes, pairs);
+  reserveFor(static_cast<std::uint32_t>(boxes.size()));
+  // The sweep estimates its cost from the boxes' extents along each axis; the grid sizes its
+  // cells by their larger sides. When the last call took the grid (a pile: the sweep
+  // declines), one pass gathers both; else the grid's pass waits until the sweep declines.
+  // Either way the same sums in the same order: only the work depends on the last call.
+  SweepAndPrune::Extents extents;
+  real extentSum = 0;
+  real maxExtent = 0;
+  const bool gridExpected = lastTookGrid_ || !allowSweep;
+  if (gridExpected) {
+    for (const BoundingBox& box : boxes) {
+      extents.add(box);
+      extentSum += extent(box);
+      maxExtent = std::max(maxExtent, extent(box));
+    }
+  } else {
+    for (const BoundingBox& box : boxes) extents.add(box);
+  }
+  lastTookGrid_ = false;
+  if (allowSweep && sweep_.findPairs(boxes, extents, sweepTestsPerBox, pairs)) return;
+  if (!gridExpected) {
+    for (const BoundingBox& box : boxes) {
+      extentSum += extent(box);
+      maxExtent = std::max(maxExtent, extent(box));
+    }
+  }
+  lastTookGrid_ = true;
+  findPairsInGrid(boxes, extentSum, maxExtent, pairs);
 }
 
 namespace {
 
-/// Bits 0 to count - 1.
-std::uint64_t lowBits(std::uint32_t count) {
-  return count >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
-}
+/// BoundingBox::overlaps of one box against others, as 1 or 0 without a branch (whether
+/// candidates of a grid overlap is random to the branch predictor).
+template <class Real>
+class OverlapTest {
+ public:
+  explicit OverlapTest(const BoundingBox& box) : box_(box) {}
+  std::size_t operator()(const BoundingBox& o) const {
+    return std::size_t{(box_.lower.x <= o.upper.x) & (o.lower.x <= box_.upper.x) &
+                       (box_.lower.y <= o.upper.y) & (o.lower.y <= box_.upper.y)};
+  }
+
+ private:
+  BoundingBox box_;
+};
 
 #if defined(__SSE2__)
-// Bit j set when box j of @p count overlaps the box of corners (@p lx, @p ly), (@p ux, @p uy):
-// two doubles, or four floats, per instruction (a comparison with NaN is false, as in C++).
-// Bits from count on are garbage (padding): the caller masks them.
-[[maybe_unused]] std::uint64_t overlapBits(double lx, double ux, double ly, double uy,
-                                           const double* lowerX, const double* upperX,
-                                           const double* lowerY, const double* upperY,
-                                           std::uint32_t count) {
-  const __m128d boxLowerX = _mm_set1_pd(lx);
-  const __m128d boxUpperX = _mm_set1_pd(ux);
-  const __m128d boxLowerY = _mm_set1_pd(ly);
-  const __m128d boxUpperY = _mm_set1_pd(uy);
-  std::uint64_t row = 0;
-  for (std::uint32_t j = 0; j < count; j += 2) {
-    __m128d hit = _mm_cmple_pd(boxLowerX, _mm_loadu_pd(upperX + j));
-    hit = _mm_and_pd(hit, _mm_cmple_pd(_mm_loadu_pd(lowerX + j), boxUpperX));
-    hit = _mm_and_pd(hit, _mm_cmple_pd(boxLowerY, _mm_loadu_pd(upperY + j)));
-    hit = _mm_and_pd(hit, _mm_cmple_pd(_mm_loadu_pd(lowerY + j), boxUpperY));
-    row |= static_cast<std::uint64_t>(_mm_movemask_pd(hit)) << j;
+// The same comparisons two or four at a time: lower corners against upper corners (a
+// comparison with NaN is false, as in C++). A box is its corners' coordinates in a row.
+template <>
+class OverlapTest<double> {
+ public:
+  explicit OverlapTest(const BoundingBox& box)
+      : lower_(_mm_loadu_pd(row(box))), upper_(_mm_loadu_pd(row(box) + 2)) {}
+  std::size_t operator()(const BoundingBox& o) const {
+    const __m128d hit = _mm_and_pd(_mm_cmple_pd(lower_, _mm_loadu_pd(row(o) + 2)),
+                                   _mm_cmple_pd(_mm_loadu_pd(row(o)), upper_));
+    return std::size_t{_mm_movemask_pd(hit) == 3};
   }
-  return row;
-}
 
-[[maybe_unused]] std::uint64_t overlapBits(float lx, float ux, float ly, float uy,
-                                           const float* lowerX, const float* upperX,
-                                           const float* lowerY, const float* upperY,
-                                           std::uint32_t count) {
-  const __m128 boxLowerX = _mm_set1_ps(lx);
-  const __m128 boxUpperX = _mm_set1_ps(ux);
-  const __m128 boxLowerY = _mm_set1_ps(ly);
-  const __m128 boxUpperY = _mm_set1_ps(uy);
-  std::uint64_t row = 0;
-  for (std::uint32_t j = 0; j < count; j += 4) {
-    __m128 hit = _mm_cmple_ps(boxLowerX, _mm_loadu_ps(upperX + j));
-    hit = _mm_and_ps(hit, _mm_cmple_ps(_mm_loadu_ps(lowerX + j), boxUpperX));
-    hit = _mm_and_ps(hit, _mm_cmple_ps(boxLowerY, _mm_loadu_ps(upperY + j)));
-    hit = _mm_and_ps(hit, _mm_cmple_ps(_mm_loadu_ps(lowerY + j), boxUpperY));
-    row |= static_cast<std::uint64_t>(_mm_movemask_ps(hit)) << j;
+ private:
+  static const double* row(const BoundingBox& box) { return reinterpret_cast<const double*>(&box); }
+  __m128d lower_;
+  __m128d upper_;
+};
+
+template <>
+class OverlapTest<float> {
+ public:
+  explicit OverlapTest(const BoundingBox& box)
+      : box_(_mm_loadu_ps(reinterpret_cast<const float*>(&box))) {}
+  std::size_t operator()(const BoundingBox& o) const {
+    const __m128 other = _mm_loadu_ps(reinterpret_cast<const float*>(&o));
+    // (box lower x, y, other lower x, y) <= (other upper x, y, box upper x, y)
+    const __m128 hit = _mm_cmple_ps(_mm_movelh_ps(box_, other), _mm_movehl_ps(box_, other));
+    return std::size_t{_mm_movemask_ps(hit) == 15};
   }
-  return row;
-}
+
+ private:
+  __m128 box_;
+};
 #endif
-
-/// Bit j set when box j (of @p count, in @p soa) overlaps @p box: the same four comparisons
-/// as BoundingBox::overlaps, on the corners stored by coordinate, several boxes at a time
-/// where the processor allows (the padding of @p soa makes the last vector whole).
-std::uint64_t overlapRow(const BoundingBox& box, const BoxColumns& soa, std::uint32_t count) {
-#if defined(__SSE2__)
-  return overlapBits(box.lower.x, box.upper.x, box.lower.y, box.upper.y, soa.lowerX, soa.upperX,
-                     soa.lowerY, soa.upperY, count) &
-         lowBits(count);
-#else
-  std::uint64_t row = 0;
-  for (std::uint32_t j = 0; j < count; ++j) {
-    const bool hit = (box.lower.x <= soa.upperX[j]) & (soa.lowerX[j] <= box.upper.x) &
-                     (box.lower.y <= soa.upperY[j]) & (soa.lowerY[j] <= box.upper.y);
-    row |= std::uint64_t{hit} << j;
-  }
-  return row;
-#endif
-}
-
-/// Bits above @p i.
-std::uint64_t above(std::uint32_t i) { return ~std::uint64_t{0} << i << 1; }
-
 }  // namespace
-
-void BroadPhase::findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint64_t moved,
-                                   bool remembered, std::vector<BoxPair>& pairs) {
-  const auto count = static_cast<std::uint32_t>(boxes.size());
-  if (overlaps_.empty()) {  // the first call, even with no box (columns_ must not be null)
-    overlaps_.resize(smallCount);
-    movedRows_.resize(smallCount);
-    // Padded to whole vectors of four (the rows mask the padding out).
-    columns_.resize(4 * (smallCount + 3));
-  }
-  if (!remembered) moved = count == 0 ? 0 : ~std::uint64_t{0} >> (64 - count);
-  // The corners by coordinate (unmoved boxes are as stored by the last call).
-  const std::size_t stride = smallCount + 3;
-  const BoxColumns soa{columns_.data(), columns_.data() + stride, columns_.data() + 2 * stride,
-                       columns_.data() + 3 * stride};
-  for (std::uint64_t bits = moved; bits != 0; bits &= bits - 1) {
-    const auto m = static_cast<std::uint32_t>(std::countr_zero(bits));
-    soa.lowerX[m] = boxes[m].lower.x;
-    soa.upperX[m] = boxes[m].upper.x;
-    soa.lowerY[m] = boxes[m].lower.y;
-    soa.upperY[m] = boxes[m].upper.y;
-  }
-  // Only rows that had pairs, moved boxes, and boxes below a moved box that now meets them can
-  // change; every other row stays empty.
-  std::uint64_t visit = (remembered ? rowsWithPairs_ : 0) | moved;
-  for (std::uint64_t bits = moved; bits != 0; bits &= bits - 1) {
-    const auto m = static_cast<std::uint32_t>(std::countr_zero(bits));
-    movedRows_[m] = overlapRow(boxes[m], soa, count) & ~(std::uint64_t{1} << m);
-    visit |= movedRows_[m] & ~above(m);
-  }
-  rowsWithPairs_ = 0;
-  for (; visit != 0; visit &= visit - 1) {
-    const auto i = static_cast<std::uint32_t>(std::countr_zero(visit));
-    std::uint64_t row;
-    if ((moved >> i) & 1) {
-      row = movedRows_[i] & above(i);
-    } else {
-      // Unmoved against unmoved: as last time; against the moved boxes above: their rows say.
-      row = overlaps_[i] & ~moved;
-      for (std::uint64_t m = moved & above(i); m != 0; m &= m - 1) {
-        const auto j = static_cast<std::uint32_t>(std::countr_zero(m));
-        row |= ((movedRows_[j] >> i) & 1) << j;
-      }
-    }
-    overlaps_[i] = row;
-    rowsWithPairs_ |= std::uint64_t{row != 0} << i;
-    for (; row != 0; row &= row - 1)
-      pairs.push_back({i, static_cast<std::uint32_t>(std::countr_zero(row))});
-  }
-  rememberedCount_ = count;
-}
 
 void BroadPhase::reserveFor(std::uint32_t count) {
   // Sized for the box count, not for this call's layout: a layout that spreads later needs no
@@ -190,24 +159,20 @@ void BroadPhase::reserveFor(std::uint32_t count) {
   const auto cells = static_cast<std::size_t>(denseCellsPerBox * count + denseCellsMargin);
   cellStart_.reserve(std::max<std::size_t>(cells, bucketCountFor(count)) + 1);
   cellCursor_.reserve(cellStart_.capacity());
-  for (auto* buffer : {&cellOfBox_, &sortedBoxes_, &oversized_}) buffer->reserve(count);
+  for (auto* buffer : {&cellOfBox_, &sortedBoxes_, &slotOfBox_, &oversized_})
+    buffer->reserve(count);
   cellX_.reserve(count);
   cellY_.reserve(count);
   sweep_.reserve(count);
   reservedCount_ = count;
 }
 
-void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
+void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, real extentSum, real maxExtent,
+                                 std::vector<BoxPair>& pairs) {
   const auto count = static_cast<std::uint32_t>(boxes.size());
   // Cells as small as the largest box allows (about one box per cell for similar sizes), but
   // no larger than twice the mean: rare big boxes are handled as oversized instead.
-  real meanExtent = 0;
-  real maxExtent = 0;
-  for (const BoundingBox& box : boxes) {
-    meanExtent += extent(box);
-    maxExtent = std::max(maxExtent, extent(box));
-  }
-  meanExtent /= static_cast<real>(count);
+  const real meanExtent = extentSum / static_cast<real>(count);
   const real cellSize = std::max(std::min(maxExtent, 2 * meanExtent), realEpsilon);
 
   // Cell coordinates of the regular boxes, and the rectangle of cells they span.
@@ -227,8 +192,8 @@ void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, std::vector
       continue;
     }
     const Vector2 centre = (box.lower + box.upper) * real(0.5);
-    cellX_[i] = static_cast<std::int64_t>(std::floor(centre.x / cellSize));
-    cellY_[i] = static_cast<std::int64_t>(std::floor(centre.y / cellSize));
+    cellX_[i] = floorToInt(centre.x / cellSize);
+    cellY_[i] = floorToInt(centre.y / cellSize);
     cellOfBox_[i] = 0;
     lowX = std::min(lowX, cellX_[i]);
     lowY = std::min(lowY, cellY_[i]);
@@ -255,7 +220,7 @@ void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, std::vector
   }
 }
 
-void BroadPhase::sortByCell(std::uint32_t count, std::uint32_t cellCount) {
+void BroadPhase::sortByCell(std::uint32_t count, std::uint32_t cellCount, bool withSlots) {
   // Counting sort in index order, so each cell lists its boxes by increasing index.
   cellStart_.assign(cellCount + 1, 0);
   for (std::uint32_t i = 0; i < count; ++i)
@@ -263,8 +228,18 @@ void BroadPhase::sortByCell(std::uint32_t count, std::uint32_t cellCount) {
   for (std::uint32_t c = 0; c < cellCount; ++c) cellStart_[c + 1] += cellStart_[c];
   cellCursor_.assign(cellStart_.begin(), cellStart_.end() - 1);
   sortedBoxes_.resize(cellStart_[cellCount]);
-  for (std::uint32_t i = 0; i < count; ++i)
-    if (cellOfBox_[i] != oversizedMark) sortedBoxes_[cellCursor_[cellOfBox_[i]]++] = i;
+  if (!withSlots) {
+    for (std::uint32_t i = 0; i < count; ++i)
+      if (cellOfBox_[i] != oversizedMark) sortedBoxes_[cellCursor_[cellOfBox_[i]]++] = i;
+    return;
+  }
+  slotOfBox_.resize(count);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    if (cellOfBox_[i] == oversizedMark) continue;
+    const std::uint32_t slot = cellCursor_[cellOfBox_[i]]++;
+    sortedBoxes_[slot] = i;
+    slotOfBox_[i] = slot;
+  }
 }
 
 void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::int64_t lowX,
@@ -279,26 +254,51 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
   for (std::uint32_t i = 0; i < count; ++i)
     if (cellOfBox_[i] != oversizedMark)
       cellOfBox_[i] = static_cast<std::uint32_t>((cellX_[i] - lowX) * rows + (cellY_[i] - lowY));
-  sortByCell(count, cellCount);
+  sortByCell(count, cellCount, true);
 
-  // The same visiting order as the hashed grid: own cell (higher indices), then the cells
-  // (x+1, y-1), (x+1, y), (x+1, y+1), then (x, y+1), each by increasing index.
-  const auto testRange = [&](std::uint32_t i, std::uint32_t begin, std::uint32_t end) {
-    for (std::uint32_t k = begin; k < end; ++k) {
-      const std::uint32_t j = sortedBoxes_[k];
-      if (boxes[i].overlaps(boxes[j])) pairs.push_back({std::min(i, j), std::max(i, j)});
-    }
-  };
+  // The same visiting order as the hashed grid: own cell (higher indices: those after the
+  // box itself, as a cell lists its boxes by index), then the cells (x+1, y-1), (x+1, y),
+  // (x+1, y+1), then (x, y+1), each by increasing index.
+  // Whether a candidate overlaps is random to the branch predictor: each candidate pair is
+  // written at the end of the output and kept (the end advanced) when it overlaps, without a
+  // branch. The output is therefore sized ahead, for every candidate of the box at hand.
+  std::size_t n = pairs.size();
+  pairs.resize(n + 2 * std::size_t{count} + 64);
+  BoxPair* out = pairs.data();
+  const BoundingBox* const all = boxes.data();
+  const std::uint32_t* const start = cellStart_.data();
+  const std::uint32_t* const sorted = sortedBoxes_.data();
   for (std::uint32_t i = 0; i < count; ++i) {
     const std::uint32_t own = cellOfBox_[i];
     if (own == oversizedMark) continue;
-    for (std::uint32_t k = cellStart_[own]; k < cellStart_[own + 1]; ++k) {
-      const std::uint32_t j = sortedBoxes_[k];
-      if (j > i && boxes[i].overlaps(boxes[j])) pairs.push_back({i, j});
+    const std::uint32_t ownBegin = slotOfBox_[i] + 1;
+    const std::uint32_t aboveBegin = start[own + 1];
+    const std::uint32_t aboveEnd = start[own + 2];
+    const std::uint32_t nextBegin = start[own + stride - 1];
+    const std::uint32_t nextEnd = start[own + stride + 2];
+    const std::size_t candidates = (aboveEnd - ownBegin) + (nextEnd - nextBegin);
+    if (n + candidates > pairs.size()) {  // rare: the output doubles
+      pairs.resize(std::max(2 * pairs.size(), n + candidates));
+      out = pairs.data();
     }
-    testRange(i, cellStart_[own + stride - 1], cellStart_[own + stride + 2]);
-    testRange(i, cellStart_[own + 1], cellStart_[own + 2]);
+    const OverlapTest<real> overlapsBox(all[i]);
+    const auto overlaps = [&](std::uint32_t j) { return overlapsBox(all[j]); };
+    for (std::uint32_t k = ownBegin; k < aboveBegin; ++k) {
+      const std::uint32_t j = sorted[k];
+      out[n] = {i, j};
+      n += overlaps(j);
+    }
+    const auto testRange = [&](std::uint32_t begin, std::uint32_t end) {
+      for (std::uint32_t k = begin; k < end; ++k) {
+        const std::uint32_t j = sorted[k];
+        out[n] = {std::min(i, j), std::max(i, j)};
+        n += overlaps(j);
+      }
+    };
+    testRange(nextBegin, nextEnd);
+    testRange(aboveBegin, aboveEnd);
   }
+  pairs.resize(n);
 }
 
 void BroadPhase::findPairsInHashedGrid(std::span<const BoundingBox> boxes,
@@ -308,7 +308,7 @@ void BroadPhase::findPairsInHashedGrid(std::span<const BoundingBox> boxes,
   const std::uint32_t mask = bucketCount - 1;
   for (std::uint32_t i = 0; i < count; ++i)
     if (cellOfBox_[i] != oversizedMark) cellOfBox_[i] = hashCell(cellX_[i], cellY_[i], mask);
-  sortByCell(count, bucketCount);
+  sortByCell(count, bucketCount, false);
 
   // Regular pairs. A box can only overlap boxes whose centres lie in the 3 x 3 cells around
   // its own; visiting its own cell (higher indices only) and the four "forward" cells (all

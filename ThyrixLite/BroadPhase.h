@@ -68,14 +68,25 @@ class BroadPhase {
  private:
   void findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint64_t moved, bool remembered,
                          std::vector<BoxPair>& pairs);
-  void findPairsInGrid(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
+  /// The grid's pairs; @p extentSum and @p maxExtent are the sum and the largest of the
+  /// boxes' extents (the larger side of each), summed in index order.
+  /// More than smallCount boxes: the sweep or the grid. (Not inlined into findPairs, whose
+  /// few-box calls then keep a light frame.)
+#if defined(__GNUC__)
+  [[gnu::noinline]]
+#endif
+  void
+  findPairsAmongMany(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
+  void findPairsInGrid(std::span<const BoundingBox> boxes, real extentSum, real maxExtent,
+                       std::vector<BoxPair>& pairs);
   void findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::int64_t lowX,
                             std::int64_t lowY, std::int64_t columns, std::int64_t rows,
                             std::vector<BoxPair>& pairs);
   void findPairsInHashedGrid(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
   /// Groups the regular boxes by cellOfBox_ (cells 0 to cellCount - 1) into sortedBoxes_,
   /// with cellStart_ marking each cell's range.
-  void sortByCell(std::uint32_t count, std::uint32_t cellCount);
+  /// With @p withSlots, slotOfBox_ gets each regular box's position in sortedBoxes_.
+  void sortByCell(std::uint32_t count, std::uint32_t cellCount, bool withSlots);
   void reserveFor(std::uint32_t count);
 
   // Few boxes: the corners by coordinate, smallCount + 3 of each (padding for whole vectors)
@@ -96,8 +107,10 @@ class BroadPhase {
   std::vector<std::uint32_t> cellCursor_;    // fill position of each cell during the sort
   std::vector<std::uint32_t> sortedBoxes_;   // regular boxes grouped by cell, by index within
   std::vector<std::uint32_t> oversized_;     // boxes larger than a cell
+  std::vector<std::uint32_t> slotOfBox_;     // position of each box in sortedBoxes_ (dense)
 
-  SweepAndPrune sweep_;  // boxes along a line
+  SweepAndPrune sweep_;        // boxes along a line
+  bool lastTookGrid_ = false;  // the last call of more than smallCount boxes used the grid
 };
 
 }  // namespace thyrix

@@ -9,26 +9,19 @@ void SweepAndPrune::reserve(std::uint32_t count) { entries_.reserve(std::size_t{
 
 bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, real testsPerBox,
                               std::vector<BoxPair>& pairs) {
+  Extents extents;
+  for (const BoundingBox& box : boxes) extents.add(box);
+  return findPairs(boxes, extents, testsPerBox, pairs);
+}
+
+bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, const Extents& extents,
+                              real testsPerBox, std::vector<BoxPair>& pairs) {
   // How many boxes each box would be tested against along each axis, if the boxes were spread
   // evenly over the span they cover on it: their count times their mean extent over the span
   // (which includes the extents: boxes on top of each other give the count, not a division by
   // zero). Summed in index order, so that the choice depends on the boxes only.
-  real extentX = 0;
-  real extentY = 0;
-  real lowX = realMax;
-  real lowY = realMax;
-  real highX = -realMax;
-  real highY = -realMax;
-  for (const BoundingBox& box : boxes) {
-    extentX += box.upper.x - box.lower.x;
-    extentY += box.upper.y - box.lower.y;
-    lowX = std::min(lowX, box.lower.x);
-    lowY = std::min(lowY, box.lower.y);
-    highX = std::max(highX, box.upper.x);
-    highY = std::max(highY, box.upper.y);
-  }
-  const real testsX = extentX / (highX - lowX);
-  const real testsY = extentY / (highY - lowY);
+  const real testsX = extents.sumX / (extents.highX - extents.lowX);
+  const real testsY = extents.sumY / (extents.highY - extents.lowY);
   // Along x unless y looks better or x is NaN (an infinite extent, or a NaN box: then along y
   // when that is a number); a NaN estimate declines.
   const int axis = testsX <= testsY ? 0 : 1;

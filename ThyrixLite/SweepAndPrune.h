@@ -5,6 +5,7 @@
 
 #include <ThyrixLite/BoundingBox.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -36,6 +37,33 @@ class SweepAndPrune {
   /// (clusters far apart look spread), when the sweep takes more than 3 times as many tests.
   /// The axis is the one with the lower estimate.
   bool findPairs(std::span<const BoundingBox> boxes, real testsPerBox, std::vector<BoxPair>& pairs);
+
+  /// What findPairs() estimates its cost from: the boxes' summed extents along each axis and
+  /// the span they cover, gathered in index order (the sums depend on the order).
+  struct Extents {
+    real sumX = 0;          ///< sum of the boxes' extents along x
+    real sumY = 0;          ///< sum of the boxes' extents along y
+    real lowX = realMax;    ///< least lower x
+    real lowY = realMax;    ///< least lower y
+    real highX = -realMax;  ///< greatest upper x
+    real highY = -realMax;  ///< greatest upper y
+
+    /// Adds @p box, the next one in index order.
+    void add(const BoundingBox& box) {
+      sumX += box.upper.x - box.lower.x;
+      sumY += box.upper.y - box.lower.y;
+      lowX = std::min(lowX, box.lower.x);
+      lowY = std::min(lowY, box.lower.y);
+      highX = std::max(highX, box.upper.x);
+      highY = std::max(highY, box.upper.y);
+    }
+  };
+
+  /// The same as findPairs(boxes, testsPerBox, pairs), with @p extents gathered by the caller
+  /// over every box of @p boxes (in index order): one pass over the boxes less when the caller
+  /// reads them anyway.
+  bool findPairs(std::span<const BoundingBox> boxes, const Extents& extents, real testsPerBox,
+                 std::vector<BoxPair>& pairs);
 
   /// Sizes the buffers for @p count boxes, so that calls with no more boxes do not allocate.
   void reserve(std::uint32_t count);

@@ -494,5 +494,22 @@ TEST(BroadPhase, WarmedUpCallsReuseTheirBuffers) {
   expectSameAsBruteForce(large, pairs);
 }
 
+TEST(BroadPhase, AlternatingSweepAndGridGiveWhatAFreshInstanceGives) {
+  // How much work a call does depends on the last one (after the grid, the grid's extents are
+  // gathered together with the sweep's estimate); the pairs and their order must not.
+  const std::vector<BoundingBox> line = chainBoxes(3, 400, 0.1, 0.125, 0.3);
+  const std::vector<BoundingBox> pile = randomBoxes(5, 600, 2, 20);
+  BroadPhase used;
+  std::vector<BoxPair> pairs;
+  std::vector<BoxPair> expected;
+  for (const auto* boxes : {&line, &pile, &pile, &line, &line, &pile}) {
+    BroadPhase fresh;
+    fresh.findPairs(*boxes, expected);
+    used.findPairs(*boxes, pairs);
+    EXPECT_TRUE(samePairs(pairs, expected));
+    expectSameAsBruteForce(*boxes, pairs);
+  }
+}
+
 }  // namespace
 }  // namespace thyrix

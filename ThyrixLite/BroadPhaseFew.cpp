@@ -1,0 +1,138 @@
+/// @file BroadPhaseFew.cpp
+/// @brief BroadPhase up to smallCount boxes: every pair, as one bit mask per box.
+#include <ThyrixLite/BroadPhase.h>
+
+#include <bit>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace thyrix {
+namespace {
+
+static_assert(BroadPhase::smallCount <= 64, "few boxes keep their overlaps in 64-bit masks");
+
+/// Bits 0 to count - 1.
+std::uint64_t lowBits(std::uint32_t count) {
+  return count >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
+}
+
+#if defined(__SSE2__)
+// Bit j set when box j of @p count overlaps the box of corners (@p lx, @p ly), (@p ux, @p uy):
+// two doubles, or four floats, per instruction (a comparison with NaN is false, as in C++).
+// Bits from count on are garbage (padding): the caller masks them.
+[[maybe_unused]] std::uint64_t overlapBits(double lx, double ux, double ly, double uy,
+                                           const double* lowerX, const double* upperX,
+                                           const double* lowerY, const double* upperY,
+                                           std::uint32_t count) {
+  const __m128d boxLowerX = _mm_set1_pd(lx);
+  const __m128d boxUpperX = _mm_set1_pd(ux);
+  const __m128d boxLowerY = _mm_set1_pd(ly);
+  const __m128d boxUpperY = _mm_set1_pd(uy);
+  std::uint64_t row = 0;
+  for (std::uint32_t j = 0; j < count; j += 2) {
+    __m128d hit = _mm_cmple_pd(boxLowerX, _mm_loadu_pd(upperX + j));
+    hit = _mm_and_pd(hit, _mm_cmple_pd(_mm_loadu_pd(lowerX + j), boxUpperX));
+    hit = _mm_and_pd(hit, _mm_cmple_pd(boxLowerY, _mm_loadu_pd(upperY + j)));
+    hit = _mm_and_pd(hit, _mm_cmple_pd(_mm_loadu_pd(lowerY + j), boxUpperY));
+    row |= static_cast<std::uint64_t>(_mm_movemask_pd(hit)) << j;
+  }
+  return row;
+}
+
+[[maybe_unused]] std::uint64_t overlapBits(float lx, float ux, float ly, float uy,
+                                           const float* lowerX, const float* upperX,
+                                           const float* lowerY, const float* upperY,
+                                           std::uint32_t count) {
+  const __m128 boxLowerX = _mm_set1_ps(lx);
+  const __m128 boxUpperX = _mm_set1_ps(ux);
+  const __m128 boxLowerY = _mm_set1_ps(ly);
+  const __m128 boxUpperY = _mm_set1_ps(uy);
+  std::uint64_t row = 0;
+  for (std::uint32_t j = 0; j < count; j += 4) {
+    __m128 hit = _mm_cmple_ps(boxLowerX, _mm_loadu_ps(upperX + j));
+    hit = _mm_and_ps(hit, _mm_cmple_ps(_mm_loadu_ps(lowerX + j), boxUpperX));
+    hit = _mm_and_ps(hit, _mm_cmple_ps(boxLowerY, _mm_loadu_ps(upperY + j)));
+    hit = _mm_and_ps(hit, _mm_cmple_ps(_mm_loadu_ps(lowerY + j), boxUpperY));
+    row |= static_cast<std::uint64_t>(_mm_movemask_ps(hit)) << j;
+  }
+  return row;
+}
+#endif
+
+/// Bit j set when box j (of @p count, in @p soa) overlaps @p box: the same four comparisons
+/// as BoundingBox::overlaps, on the corners stored by coordinate, several boxes at a time
+/// where the processor allows (the padding of @p soa makes the last vector whole).
+std::uint64_t overlapRow(const BoundingBox& box, const BoxColumns& soa, std::uint32_t count) {
+#if defined(__SSE2__)
+  return overlapBits(box.lower.x, box.upper.x, box.lower.y, box.upper.y, soa.lowerX, soa.upperX,
+                     soa.lowerY, soa.upperY, count) &
+         lowBits(count);
+#else
+  std::uint64_t row = 0;
+  for (std::uint32_t j = 0; j < count; ++j) {
+    const bool hit = (box.lower.x <= soa.upperX[j]) & (soa.lowerX[j] <= box.upper.x) &
+                     (box.lower.y <= soa.upperY[j]) & (soa.lowerY[j] <= box.upper.y);
+    row |= std::uint64_t{hit} << j;
+  }
+  return row;
+#endif
+}
+
+/// Bits above @p i.
+std::uint64_t above(std::uint32_t i) { return ~std::uint64_t{0} << i << 1; }
+
+}  // namespace
+
+void BroadPhase::findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint64_t moved,
+                                   bool remembered, std::vector<BoxPair>& pairs) {
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  if (overlaps_.empty()) {  // the first call, even with no box (columns_ must not be null)
+    overlaps_.resize(smallCount);
+    movedRows_.resize(smallCount);
+    // Padded to whole vectors of four (the rows mask the padding out).
+    columns_.resize(4 * (smallCount + 3));
+  }
+  if (!remembered) moved = count == 0 ? 0 : ~std::uint64_t{0} >> (64 - count);
+  // The corners by coordinate (unmoved boxes are as stored by the last call).
+  const std::size_t stride = smallCount + 3;
+  const BoxColumns soa{columns_.data(), columns_.data() + stride, columns_.data() + 2 * stride,
+                       columns_.data() + 3 * stride};
+  for (std::uint64_t bits = moved; bits != 0; bits &= bits - 1) {
+    const auto m = static_cast<std::uint32_t>(std::countr_zero(bits));
+    soa.lowerX[m] = boxes[m].lower.x;
+    soa.upperX[m] = boxes[m].upper.x;
+    soa.lowerY[m] = boxes[m].lower.y;
+    soa.upperY[m] = boxes[m].upper.y;
+  }
+  // Only rows that had pairs, moved boxes, and boxes below a moved box that now meets them can
+  // change; every other row stays empty.
+  std::uint64_t visit = (remembered ? rowsWithPairs_ : 0) | moved;
+  for (std::uint64_t bits = moved; bits != 0; bits &= bits - 1) {
+    const auto m = static_cast<std::uint32_t>(std::countr_zero(bits));
+    movedRows_[m] = overlapRow(boxes[m], soa, count) & ~(std::uint64_t{1} << m);
+    visit |= movedRows_[m] & ~above(m);
+  }
+  rowsWithPairs_ = 0;
+  for (; visit != 0; visit &= visit - 1) {
+    const auto i = static_cast<std::uint32_t>(std::countr_zero(visit));
+    std::uint64_t row;
+    if ((moved >> i) & 1) {
+      row = movedRows_[i] & above(i);
+    } else {
+      // Unmoved against unmoved: as last time; against the moved boxes above: their rows say.
+      row = overlaps_[i] & ~moved;
+      for (std::uint64_t m = moved & above(i); m != 0; m &= m - 1) {
+        const auto j = static_cast<std::uint32_t>(std::countr_zero(m));
+        row |= ((movedRows_[j] >> i) & 1) << j;
+      }
+    }
+    overlaps_[i] = row;
+    rowsWithPairs_ |= std::uint64_t{row != 0} << i;
+    for (; row != 0; row &= row - 1)
+      pairs.push_back({i, static_cast<std::uint32_t>(std::countr_zero(row))});
+  }
+  rememberedCount_ = count;
+}
+
+}  // namespace thyrix
