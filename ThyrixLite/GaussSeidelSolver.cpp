@@ -8,15 +8,29 @@ namespace {
 
 constexpr std::uint32_t noBody = ~std::uint32_t{0};
 
+/// Where the island's row @p p goes among its @p n local rows. Rows come in detection order,
+/// where a body's contacts follow one another; then every row would wait for the previous
+/// one's velocity update (a sweep is latency-bound). Within each block of 16 rows the two
+/// halves are taken alternately (0, 8, 1, 9, ...): consecutive rows are then mostly of
+/// different bodies and overlap in the processor, while the order stays nearly the same, and
+/// so does the convergence. A fixed pattern rather than a search for conflict-free rows: no
+/// unpredictable branch. Measured on piles of 1000 to 10000 circles: a sweep about 25%
+/// faster, penetration as before.
+std::size_t interleaved(std::size_t p, std::size_t n) {
+  constexpr std::size_t half = 8;
+  constexpr std::size_t block = 2 * half;
+  if (p >= n / block * block) return p;  // the last, partial block keeps its order
+  const std::size_t start = p / block * block;
+  const std::size_t j = p - start;
+  return start + (j < half ? 2 * j : 2 * (j - half) + 1);
+}
+
 }  // namespace
 
 void GaussSeidelSolver::reserve(std::size_t bodies, std::size_t rows) {
-  for (auto* buffer : {&forces_, &spareForces_, &changes_, &direction_}) buffer->reserve(rows);
+  for (auto* buffer : {&forces_, &changes_, &direction_}) buffer->reserve(rows);
   rows_.reserve(rows);
-  spareRows_.reserve(rows);
   turning_.reserve(rows);
-  spareTurning_.reserve(rows);
-  order_.reserve(rows);
   // Each row may bring two bodies of its own (a fixed body gets one copy per row).
   bodies_.reserve(2 * rows);
   globalBody_.reserve(2 * rows);
@@ -97,6 +111,7 @@ void GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
   bool turning = false;
   for (std::size_t p = 0; p < n; ++p) {
     const ContactConstraint& c = rows[island[p]];
+    const std::size_t q = interleaved(p, n);
     const SolverBody& bodyA = bodies[c.a];
     const SolverBody& bodyB = bodies[c.b];
     const real response = c.selfResponse(bodyA, bodyB);
@@ -104,7 +119,7 @@ void GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
     const real inverseScaled = response > 0 ? relaxation / response : 0;
     const std::uint32_t a = localIndex(c.a, bodyA);
     const std::uint32_t b = localIndex(c.b, bodyB);
-    rows_[p] = {a,
+    rows_[q] = {a,
                 b,
                 c.normal,
                 bodyA.inverseMass,
@@ -113,44 +128,12 @@ void GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
                 response,
                 inverseScaled};
     // Kept for every row, read only if one of them turns.
-    turning_[p] = {c.armA, c.armB, -c.armA * bodyA.inverseInertia, c.armB * bodyB.inverseInertia};
+    turning_[q] = {c.armA, c.armB, -c.armA * bodyA.inverseInertia, c.armB * bodyB.inverseInertia};
     turning = turning || turns(c.armA, bodyA) || turns(c.armB, bodyB);
-    forces_[p] = c.force;
+    forces_[q] = c.force;
   }
   turningIsland_ = turning;
   bodyCount_ = used;
-  interleave();
-}
-
-void GaussSeidelSolver::interleave() {
-  // Rows come in detection order, where a body's contacts follow one another; then every row
-  // waits for the previous one's velocity update (a sweep is latency-bound). Within each block
-  // of 16 rows, the two halves are taken alternately (0, 8, 1, 9, ...): consecutive rows are
-  // then mostly of different bodies and overlap in the processor, while the order stays
-  // nearly the same, and so does the convergence. A fixed pattern rather than a search for
-  // conflict-free rows: no unpredictable branch. Measured on piles of 1000 to 10000 circles:
-  // a sweep about 25% faster, penetration as before.
-  constexpr std::size_t half = 8;
-  constexpr std::size_t block = 2 * half;
-  const std::size_t n = rows_.size();
-  order_.resize(n);
-  const std::size_t whole = n / block * block;
-  std::size_t next = 0;
-  for (std::size_t start = 0; start < whole; start += block) {
-    for (std::size_t j = 0; j < half; ++j) {
-      order_[next++] = static_cast<std::uint32_t>(start + j);
-      order_[next++] = static_cast<std::uint32_t>(start + half + j);
-    }
-  }
-  for (std::size_t p = whole; p < n; ++p) order_[next++] = static_cast<std::uint32_t>(p);
-  const auto permute = [this](auto& values, auto& spare) {
-    spare.resize(values.size());
-    for (std::size_t k = 0; k < values.size(); ++k) spare[k] = values[order_[k]];
-    values.swap(spare);
-  };
-  permute(rows_, spareRows_);
-  permute(forces_, spareForces_);
-  if (turningIsland_) permute(turning_, spareTurning_);
 }
 
 template <bool turning>
@@ -228,7 +211,8 @@ void GaussSeidelSolver::conjugateStep(real beta) {
 
 void GaussSeidelSolver::scatter(std::span<const std::uint32_t> island,
                                 std::span<ContactConstraint> rows, std::span<SolverBody> bodies) {
-  for (std::size_t p = 0; p < island.size(); ++p) rows[island[order_[p]]].force = forces_[p];
+  for (std::size_t p = 0; p < island.size(); ++p)
+    rows[island[p]].force = forces_[interleaved(p, island.size())];
   for (std::size_t l = 0; l < bodyCount_; ++l) {
     const std::uint32_t body = globalBody_[l];
     if (body == noBody) continue;  // a fixed body's copy

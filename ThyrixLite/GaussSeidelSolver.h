@@ -75,8 +75,8 @@ class GaussSeidelSolver {
     real squaredNorm = 0;    // the sum of the squared changes of the forces
   };
 
-  /// Reorders the gathered rows so that consecutive rows rarely share a body.
-  void interleave();
+  /// Copies the island into the local rows and bodies, the rows interleaved so that
+  /// consecutive ones seldom share a body (see interleaved() in the source).
   void gather(std::span<const std::uint32_t> island, std::span<const ContactConstraint> rows,
               std::span<const SolverBody> bodies, real relaxation);
   /// One sweep over the rows, forward or backward; records each row's change in changes_.
@@ -99,12 +99,8 @@ class GaussSeidelSolver {
   std::vector<Body> bodies_;  // the island's bodies: the first bodyCount_
   std::size_t bodyCount_ = 0;
   std::vector<real> forces_;
-  std::vector<real> changes_;         // each force's change in the last sweep
-  std::vector<real> direction_;       // the conjugate direction p
-  std::vector<std::uint32_t> order_;  // local row -> position in the island
-  std::vector<Row> spareRows_;        // the buffers interleave() permutes into
-  std::vector<real> spareForces_;
-  std::vector<Turning> spareTurning_;
+  std::vector<real> changes_;              // each force's change in the last sweep
+  std::vector<real> direction_;            // the conjugate direction p
   std::vector<std::uint32_t> globalBody_;  // local body -> index in the caller's bodies, or none
   std::vector<std::uint32_t> localBody_;   // caller's body -> local index, or none
 };
