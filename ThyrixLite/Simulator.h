@@ -169,10 +169,12 @@ class Simulator : public World {
   void addCachedBox(std::uint32_t shape, Vector2& boxMin, Vector2& boxMax) const;
   bool updateShape(std::uint32_t shape, bool poseKnown, Vector2& lower, Vector2& upper);
   void findBorderContacts(bool reuse);
-  /// findBorderContacts' reach bits for all borders at once over @p words words of shapes;
-  /// false (nothing done) when a border moved or there are more than a few.
+  /// Border @p k's reach bits over @p words words of shapes: every shape's retested if the
+  /// border moved, else the moved shapes'.
+  void findBorderReach(std::size_t k, std::size_t words, bool borderMoved);
+  /// findBorderReach for all borders at once, none of which moved; false (nothing done) when
+  /// a border moved or there are more than a few.
   bool findBorderReachTogether(std::size_t words);
-  void visitBorderContacts(bool reuse, std::size_t words);
   void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void indexPreviousContacts();

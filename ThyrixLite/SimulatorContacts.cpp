@@ -67,6 +67,11 @@ struct BorderLine {
   Vector2 absNormal;  // |normal.x|, |normal.y|
 };
 
+/// The line of a border through @p point with unit @p normal.
+BorderLine borderLine(Vector2 point, Vector2 normal) {
+  return {point, normal, {std::abs(normal.x), std::abs(normal.y)}};
+}
+
 /// Up to this many unmoved borders have their reach updated together (the piles have 3).
 constexpr std::size_t fusedBorders = 4;
 
@@ -82,35 +87,22 @@ std::uint64_t reachesBehind(const BorderLine& line, Vector2 centre, Vector2 half
 void Simulator::findBorderContacts(bool reuse) {
   // Borders skip the broad phase: each meets every grid shape whose box reaches behind its
   // line. Which shapes do is kept as one bit per grid shape and border, retested only for
-  // moved shapes; the pairs are visited in the same order either way (border, then shape).
+  // moved shapes; then the pairs are visited border by border, shape by shape.
   const std::size_t count = gridShapes_.size();
   const std::size_t words = (count + 63) / 64;
   const bool remembered = restSkipping && reachShapes_ == count;
   reachShapes_ = count;
   borderReach_.resize(borderShapes_.size() * words);
-  if (remembered && words > 1 && findBorderReachTogether(words)) {
-    visitBorderContacts(reuse, words);
-    return;
+  if (!(remembered && words > 1 && findBorderReachTogether(words))) {
+    for (std::size_t k = 0; k < borderShapes_.size(); ++k)
+      findBorderReach(k, words, !remembered || shapeMoved_[borderShapes_[k]] != 0);
   }
   for (std::size_t k = 0; k < borderShapes_.size(); ++k) {
     const std::uint32_t border = borderShapes_[k];
+    // A pair keeps its contacts if neither the border nor the shape moved.
     const bool borderMoved = !remembered || shapeMoved_[border] != 0;
-    const Vector2 point = geometry_[border].p0;
-    const Vector2 normal = geometry_[border].p1;
     for (std::size_t w = 0; w < words; ++w) {
-      const std::uint64_t retest = borderMoved ? wordMask(w, count) : gridMovedBits_[w];
-      std::uint64_t& reach = borderReach_[k * words + w];
-      reach &= ~retest;
-      for (std::uint64_t bits = retest; bits != 0; bits &= bits - 1) {
-        const std::size_t i = 64 * w + static_cast<std::size_t>(std::countr_zero(bits));
-        // Out of reach when the box (margin included) lies entirely on the free side.
-        const BoundingBox& box = gridBoxes_[i];
-        const Vector2 centre = (box.lower + box.upper) * real(0.5);
-        const Vector2 half = (box.upper - box.lower) * real(0.5);
-        const real extent = std::abs(normal.x) * half.x + std::abs(normal.y) * half.y;
-        if (dot(centre - point, normal) - extent <= 0) reach |= bits & (~bits + 1);
-      }
-      for (std::uint64_t bits = reach; bits != 0; bits &= bits - 1) {
+      for (std::uint64_t bits = borderReach_[k * words + w]; bits != 0; bits &= bits - 1) {
         const std::uint32_t shape =
             gridShapes_[64 * w + static_cast<std::size_t>(std::countr_zero(bits))];
         if (reuse && !borderMoved && shapeMoved_[shape] == 0)
@@ -122,10 +114,28 @@ void Simulator::findBorderContacts(bool reuse) {
   }
 }
 
+void Simulator::findBorderReach(std::size_t k, std::size_t words, bool borderMoved) {
+  const std::uint32_t border = borderShapes_[k];
+  const BorderLine line = borderLine(geometry_[border].p0, geometry_[border].p1);
+  const std::size_t count = gridShapes_.size();
+  for (std::size_t w = 0; w < words; ++w) {
+    const std::uint64_t retest = borderMoved ? wordMask(w, count) : gridMovedBits_[w];
+    std::uint64_t& reach = borderReach_[k * words + w];
+    reach &= ~retest;
+    for (std::uint64_t bits = retest; bits != 0; bits &= bits - 1) {
+      const BoundingBox& box =
+          gridBoxes_[64 * w + static_cast<std::size_t>(std::countr_zero(bits))];
+      if (reachesBehind(line, (box.lower + box.upper) * real(0.5),
+                        (box.upper - box.lower) * real(0.5)) != 0)
+        reach |= bits & (~bits + 1);
+    }
+  }
+}
+
 bool Simulator::findBorderReachTogether(std::size_t words) {
   // The common case of a crowd, borders that stay: every border retests the moved shapes, so
   // each moved shape's box is read once for all of them (and the bits are set without a
-  // branch). The same test as the loop per border: the same bits. (A world of up to 64 shapes
+  // branch). The same test as findBorderReach: the same bits. (A world of up to 64 shapes
   // keeps that loop: measured, the arena mispredicted more branches here.)
   const std::size_t borders = borderShapes_.size();
   if (borders > fusedBorders) return false;
@@ -133,8 +143,7 @@ bool Simulator::findBorderReachTogether(std::size_t words) {
   for (std::size_t k = 0; k < borders; ++k) {
     const std::uint32_t border = borderShapes_[k];
     if (shapeMoved_[border] != 0) return false;
-    const Vector2 normal = geometry_[border].p1;
-    lines[k] = {geometry_[border].p0, normal, {std::abs(normal.x), std::abs(normal.y)}};
+    lines[k] = borderLine(geometry_[border].p0, geometry_[border].p1);
   }
   for (std::size_t w = 0; w < words; ++w) {
     const std::uint64_t retest = gridMovedBits_[w];
@@ -153,23 +162,6 @@ bool Simulator::findBorderReachTogether(std::size_t words) {
     for (std::size_t k = 0; k < borders; ++k) borderReach_[k * words + w] = reach[k];
   }
   return true;
-}
-
-void Simulator::visitBorderContacts(bool reuse, std::size_t words) {
-  // (No border moved: pairs of an unmoved shape are reused.)
-  for (std::size_t k = 0; k < borderShapes_.size(); ++k) {
-    const std::uint32_t border = borderShapes_[k];
-    for (std::size_t w = 0; w < words; ++w) {
-      for (std::uint64_t bits = borderReach_[k * words + w]; bits != 0; bits &= bits - 1) {
-        const std::uint32_t shape =
-            gridShapes_[64 * w + static_cast<std::size_t>(std::countr_zero(bits))];
-        if (reuse && shapeMoved_[shape] == 0)
-          reuseContacts(border, shape);
-        else
-          addContacts(border, shape);
-      }
-    }
-  }
 }
 
 void Simulator::reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
