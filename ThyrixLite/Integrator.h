@@ -16,14 +16,9 @@ class Integrator {
  public:
   /// Calls `integrate(dt)` on each object in registration order.
   void integrate(const ObjectList& objects, real dt) const;
-  /// The same, but objects whose flag in @p defaultIntegration is set are moved by
-  /// PhysicalObject::integrate directly, without a virtual call (the simulator sets the flag
-  /// for the core shapes, which do not override it).
-  void integrate(const ObjectList& objects, std::span<const std::uint8_t> defaultIntegration,
-                 real dt) const;
-  /// The same again, but given the increasing indices of the objects that are *not* moved
-  /// by PhysicalObject::integrate (@p customObjects, called virtually): the runs of objects
-  /// between them need no flag test each.
+  /// The same, but given the increasing indices of the objects that are *not* moved by
+  /// PhysicalObject::integrate (@p customObjects, called virtually), the others are moved by it
+  /// directly, without a virtual call (the core shapes, which do not override it).
   void integrateExcept(const ObjectList& objects, std::span<const std::uint32_t> customObjects,
                        real dt) const;
 };

@@ -6,8 +6,10 @@
 #include <ThyrixLite/PhysicalObject.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <iterator>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace thyrix {
@@ -69,6 +71,21 @@ class ObjectList {
   friend class World;
   Storage items_;
 };
+
+/// Calls @p other on the objects whose indices are listed in @p listed (increasing) and
+/// @p core on all the others, in index order. The runs of objects between listed ones need no
+/// test per object: the simulator runs its core shapes' step hooks so, without virtual calls.
+template <class Core, class Other>
+void forEachInRuns(const ObjectList& objects, std::span<const std::uint32_t> listed, Core&& core,
+                   Other&& other) {
+  std::size_t begin = 0;
+  for (const std::uint32_t index : listed) {
+    for (std::size_t i = begin; i < index; ++i) core(objects[i]);
+    other(objects[index]);
+    begin = index + std::size_t{1};
+  }
+  for (std::size_t i = begin; i < objects.size(); ++i) core(objects[i]);
+}
 
 /// This step's contacts of a Simulator: `size()`, `operator[]` and range-for give
 /// `const GlobalContactInfo&`. They are kept until the next step starts, so a GUI can draw them.

@@ -67,7 +67,6 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
   const std::size_t words = (gridShapes + 63) / 64;
   reserveFor(bodyStates_, objects.size() + added.size());
   reserveFor(pendingBodies_, objects.size() + added.size());
-  reserveFor(defaultHooks_, objects.size() + added.size());
   reserveFor(customObjects_, objects.size() + added.size());
   reserveFor(listedObjects_, objects.size() + added.size());
   reserveFor(shapePoses_, shapes_.size() + shapes);
@@ -106,8 +105,7 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
       gridBoxes_.push_back({});
     }
   }
-  defaultHooks_.push_back(hasDefaultHooks(object) ? 1 : 0);
-  if (defaultHooks_.back() == 0) customObjects_.push_back(static_cast<std::uint32_t>(index));
+  if (!hasDefaultHooks(object)) customObjects_.push_back(static_cast<std::uint32_t>(index));
   bodies_.push_back({});
   movable_.push_back(0);
   touchedStamp_.push_back(0);
@@ -151,17 +149,10 @@ void Simulator::advanceTime() {
   // In registration order (an elastoid pushes its bodies, registered after it, before they
   // compute their velocities); the core shapes without a virtual call, in runs between the
   // other objects (no flag to test per object).
-  std::size_t begin = 0;
-  const auto computeRun = [this, &begin](std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      objects[i].PhysicalObject::computeDerivativesWithoutContacts();
-  };
-  for (const std::uint32_t custom : customObjects_) {
-    computeRun(custom);
-    objects[custom].computeDerivativesWithoutContacts();
-    begin = custom + std::size_t{1};
-  }
-  computeRun(objects.size());
+  forEachInRuns(
+      objects, customObjects_,
+      [](PhysicalObject& object) { object.PhysicalObject::computeDerivativesWithoutContacts(); },
+      [](PhysicalObject& object) { object.computeDerivativesWithoutContacts(); });
   solveContacts();
   for (const std::uint32_t i : customObjects_) objects[i].control();  // the others do nothing
   integrator.integrateExcept(objects, customObjects_, timestep_);

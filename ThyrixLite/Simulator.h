@@ -224,9 +224,8 @@ class Simulator : public World {
   bool contactsComplete_ = false;  // `contacts` holds exactly one detection's contacts
   bool previousValid_ = false;     // previousContacts_ is the last detection's, complete
   bool previousIndexed_ = false;   // previousStart_ and previousOrder_ are up to date
-  // Per object: 1 when it keeps PhysicalObject's step hooks (called without virtual calls);
-  // the others, in registration order.
-  std::vector<std::uint8_t> defaultHooks_;
+  // The objects that do not keep PhysicalObject's step hooks, in registration order (the
+  // others' hooks are called without virtual calls).
   std::vector<std::uint32_t> customObjects_;
 
   std::vector<ContactInfo> objectContacts_;         // every object's contacts, object by object
