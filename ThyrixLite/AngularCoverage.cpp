@@ -16,15 +16,6 @@ AngularExtent wholeCircle() {
   return extent;
 }
 
-/// Half the angle subtended by a disk of @p radius whose centre is @p distance away
-/// (`distance > radius`; rounding is clamped so the result is at most pi / 2).
-real halfAngle(real radius, real distance) {
-  return std::asin(std::min(real(1), radius / distance));
-}
-
-/// The angle from @p from to @p to, in [-pi, pi].
-real angleBetween(Vector2 from, Vector2 to) { return std::atan2(cross(from, to), dot(from, to)); }
-
 }  // namespace
 
 AngularExtent splitAtPi(real begin, real end) {

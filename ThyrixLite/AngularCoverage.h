@@ -12,7 +12,9 @@
 #include <ThyrixLite/ThyrixParameters.h>
 #include <ThyrixLite/Vector2.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -42,6 +44,17 @@ struct AngularExtent {
     return {intervals.data(), static_cast<std::size_t>(count)};
   }
 };
+
+/// Half the angle subtended by a disk of @p radius whose centre is @p distance away
+/// (`distance > radius`; rounding is clamped so the result is at most pi / 2).
+inline real halfAngle(real radius, real distance) {
+  return std::asin(std::min(real(1), radius / distance));
+}
+
+/// The angle from direction @p from to direction @p to, in [-pi, pi].
+inline real angleBetween(Vector2 from, Vector2 to) {
+  return std::atan2(cross(from, to), dot(from, to));
+}
 
 /// The arc of directions from angle @p begin to angle @p end (`begin <= end`, any real values)
 /// as intervals within [-pi, pi]: the arc is first shifted by a multiple of 2 pi so that its

@@ -41,6 +41,17 @@ bool diskOutside(Vector2 offset, real radius, Vector2 view, Vector2 rightEdge, V
   return right && left;
 }
 
+/// The same for the capsule of end-cap centres at @p offset0 and @p offset1 from the eye.
+bool capsuleOutside(Vector2 offset0, Vector2 offset1, real radius, Vector2 view, Vector2 rightEdge,
+                    Vector2 leftEdge, bool convexField) {
+  // The capsule is the convex hull of its end disks: it lies in a half-plane if both do.
+  const bool right = cross(rightEdge, offset0) < -radius && cross(rightEdge, offset1) < -radius;
+  const bool left = cross(leftEdge, offset0) > radius && cross(leftEdge, offset1) > radius;
+  if (convexField)
+    return right || left || (dot(view, offset0) < -radius && dot(view, offset1) < -radius);
+  return right && left;
+}
+
 /// @p v rotated by the angle whose cosine and sine are @p c and @p s.
 Vector2 rotate(Vector2 v, real c, real s) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
 
@@ -76,16 +87,6 @@ std::pair<real, real> VisualSensor::pixelBounds(int i) const {
   const real first = viewDirection() - halfField_;
   return {first + static_cast<real>(i) * pixelAngle_,
           first + static_cast<real>(i + 1) * pixelAngle_};
-}
-
-bool VisualSensor::outside(Vector2 offset0, Vector2 offset1, real radius, Vector2 view,
-                           Vector2 rightEdge, Vector2 leftEdge) const {
-  // The capsule is the convex hull of its end disks: it lies in a half-plane if both do.
-  const bool right = cross(rightEdge, offset0) < -radius && cross(rightEdge, offset1) < -radius;
-  const bool left = cross(leftEdge, offset0) > radius && cross(leftEdge, offset1) > radius;
-  if (halfField_ <= pi<real> / 2)
-    return right || left || (dot(view, offset0) < -radius && dot(view, offset1) < -radius);
-  return right && left;
 }
 
 void VisualSensor::update(const ObjectList& objects) {
@@ -156,41 +157,38 @@ void VisualSensor::update(const ObjectList& objects) {
           AngularInterval{std::max(piece.begin, -halfField), std::min(piece.end, halfField)});
     return true;
   };
-  for (std::size_t k = 0; k < count; ++k) {
-    const Primitive* const primitive = candidates_[k].primitive;
+  // Adds a candidate's arc; false when the eye is inside (or touching) it: every pixel sees it.
+  const auto addArc = [&](const Candidate& candidate) {
+    const Primitive* const primitive = candidate.primitive;
     const real radius = primitive->radius();
     if (primitive->shapeType() == ShapeType::Circle) {
-      if (narrow) {
-        // diskExtent() and splitAtPi() inlined with the same arithmetic, bit for bit: in a
-        // field narrower than pi the pieces splitAtPi() makes of an arc crossing +-pi (or its
-        // shift of an arc whose rounded middle passes +-pi) lie outside the field, so clipping
-        // the unsplit arc gives the same intervals (VisualSensorTest's
-        // MatchesTheExtentFunctionsBitForBit checks).
-        const Vector2 offset = candidates_[k].offset;
-        const real distanceSquared = offset.lengthSquared();
-        if (distanceSquared <= radius * radius) {
-          std::fill(activations_.begin(), activations_.end(), real(1));
-          return;
-        }
-        const real half = std::asin(std::min(real(1), radius / std::sqrt(distanceSquared)));
-        const real direction = std::atan2(cross(view, offset), dot(view, offset));
-        coverage_.add(AngularInterval{std::max(direction - half, -halfField),
-                                      std::min(direction + half, halfField)});
-      } else if (!addExtent(diskExtent(eye, view, primitive->r, radius))) {
-        std::fill(activations_.begin(), activations_.end(), real(1));
-        return;
-      }
-    } else {  // a capsule
-      const real halfLength = primitive->halfLength();
-      const Vector2 axis{halfLength * std::cos(primitive->alpha),
-                         halfLength * std::sin(primitive->alpha)};
-      const Vector2 p0 = primitive->r - axis;
-      const Vector2 p1 = primitive->r + axis;
-      if (outside(p0 - eye, p1 - eye, radius, view, rightEdge, leftEdge)) continue;
-      if (!addExtent(capsuleExtent(eye, view, p0, p1, radius))) {
-        std::fill(activations_.begin(), activations_.end(), real(1));
-        return;
-      }
+      if (!narrow) return addExtent(diskExtent(eye, view, primitive->r, radius));
+      // diskExtent() and splitAtPi() inlined with the same arithmetic, bit for bit: in a
+      // field narrower than pi the pieces splitAtPi() makes of an arc crossing +-pi (or its
+      // shift of an arc whose rounded middle passes +-pi) lie outside the field, so clipping
+      // the unsplit arc gives the same intervals (VisualSensorTest's
+      // MatchesTheExtentFunctionsBitForBit checks).
+      const real distanceSquared = candidate.offset.lengthSquared();
+      if (distanceSquared <= radius * radius) return false;
+      const real half = halfAngle(radius, std::sqrt(distanceSquared));
+      const real direction = angleBetween(view, candidate.offset);
+      coverage_.add(AngularInterval{std::max(direction - half, -halfField),
+                                    std::min(direction + half, halfField)});
+      return true;
+    }
+    const real halfLength = primitive->halfLength();  // a capsule
+    const Vector2 axis{halfLength * std::cos(primitive->alpha),
+                       halfLength * std::sin(primitive->alpha)};
+    const Vector2 p0 = primitive->r - axis;
+    const Vector2 p1 = primitive->r + axis;
+    if (capsuleOutside(p0 - eye, p1 - eye, radius, view, rightEdge, leftEdge, convexField))
+      return true;
+    return addExtent(capsuleExtent(eye, view, p0, p1, radius));
+  };
+  for (std::size_t k = 0; k < count; ++k) {
+    if (!addArc(candidates_[k])) {
+      std::fill(activations_.begin(), activations_.end(), real(1));
+      return;
     }
   }
   coverage_.merge();

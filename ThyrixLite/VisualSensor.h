@@ -80,12 +80,6 @@ class VisualSensor {
   [[nodiscard]] std::pair<real, real> pixelBounds(int i) const;
 
  private:
-  /// True if the capsule of end-cap centres at @p offset0 and @p offset1 from the eye, of
-  /// @p radius, lies entirely outside the field of view of edges @p rightEdge and @p leftEdge
-  /// around @p view (conservative: a false answer does not mean the capsule is seen).
-  [[nodiscard]] bool outside(Vector2 offset0, Vector2 offset1, real radius, Vector2 view,
-                             Vector2 rightEdge, Vector2 leftEdge) const;
-
   const PhysicalObject* body_;
   Vector2 localPosition_;
   real localDirection_;
