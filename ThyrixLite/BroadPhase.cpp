@@ -75,24 +75,19 @@ void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes,
   SweepAndPrune::Extents extents;
   real extentSum = 0;
   real maxExtent = 0;
+  const auto addGridExtent = [&extentSum, &maxExtent](const BoundingBox& box) {
+    extentSum += extent(box);
+    maxExtent = std::max(maxExtent, extent(box));
+  };
   const bool gridExpected = lastTookGrid_ || !allowSweep;
-  if (gridExpected) {
-    for (const BoundingBox& box : boxes) {
-      extents.add(box);
-      extentSum += extent(box);
-      maxExtent = std::max(maxExtent, extent(box));
-    }
-  } else {
-    for (const BoundingBox& box : boxes) extents.add(box);
+  for (const BoundingBox& box : boxes) {
+    extents.add(box);
+    if (gridExpected) addGridExtent(box);
   }
   lastTookGrid_ = false;
   if (allowSweep && sweep_.findPairs(boxes, extents, sweepTestsPerBox, pairs)) return;
-  if (!gridExpected) {
-    for (const BoundingBox& box : boxes) {
-      extentSum += extent(box);
-      maxExtent = std::max(maxExtent, extent(box));
-    }
-  }
+  if (!gridExpected)
+    for (const BoundingBox& box : boxes) addGridExtent(box);
   lastTookGrid_ = true;
   findPairsInGrid(boxes, extentSum, maxExtent, pairs);
 }

@@ -26,7 +26,6 @@ void ContactForceCache::reset(std::size_t count) {
   table_.assign(capacity, Slot{empty, 0});
   stored_.clear();
   mask_ = capacity - 1;
-  entries_ = 0;
 }
 
 void ContactForceCache::insert(std::uint64_t key, real force) {
@@ -34,7 +33,6 @@ void ContactForceCache::insert(std::uint64_t key, real force) {
   while (table_[i].key != empty) i = (i + 1) & mask_;
   table_[i] = {key, stored_.size()};
   stored_.push_back({key, force});
-  ++entries_;
 }
 
 std::size_t ContactForceCache::position(std::uint64_t key) const {

@@ -31,7 +31,7 @@ class ContactForceCache {
   void reset(std::size_t count);
   /// Empties the table (nothing to do when it is already empty).
   void clear() {
-    if (entries_ > 0) reset(0);
+    if (!stored_.empty()) reset(0);
   }
   /// Stores @p force under @p key (keys are unique within a step).
   void insert(std::uint64_t key, real force);
@@ -60,7 +60,6 @@ class ContactForceCache {
   std::vector<Slot> table_;
   std::vector<Entry> stored_;  // in the order of insertion
   std::size_t mask_ = 0;
-  std::size_t entries_ = 0;
 };
 
 }  // namespace thyrix
