@@ -121,14 +121,14 @@ void GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
     const std::uint32_t b = localIndex(c.b, bodyB);
     rows_[q] = {a,
                 b,
-                c.normal,
-                bodyA.inverseMass,
-                bodyB.inverseMass,
+                c.normal * bodyA.inverseMass,
+                c.normal * bodyB.inverseMass,
+                c.normal * inverseScaled,
                 c.target * inverseScaled,
-                response,
-                inverseScaled};
+                response};
     // Kept for every row, read only if one of them turns.
-    turning_[q] = {c.armA, c.armB, -c.armA * bodyA.inverseInertia, c.armB * bodyB.inverseInertia};
+    turning_[q] = {c.armA * inverseScaled, c.armB * inverseScaled, -c.armA * bodyA.inverseInertia,
+                   c.armB * bodyB.inverseInertia};
     turning = turning || turns(c.armA, bodyA) || turns(c.armB, bodyB);
     forces_[q] = c.force;
   }
@@ -141,8 +141,8 @@ void GaussSeidelSolver::apply(std::size_t p, real change) {
   const Row& row = rows_[p];
   Body& bodyA = bodies_[row.a];
   Body& bodyB = bodies_[row.b];
-  bodyA.v -= row.normal * (change * row.inverseMassA);
-  bodyB.v += row.normal * (change * row.inverseMassB);
+  bodyA.v -= row.pushA * change;
+  bodyB.v += row.pushB * change;
   if constexpr (turning) {
     bodyA.omega += turning_[p].turnA * change;
     bodyB.omega += turning_[p].turnB * change;
@@ -163,25 +163,24 @@ GaussSeidelSolver::SweepResult GaussSeidelSolver::sweep() {
     // velocity -> new force -> velocity. Everything that does not depend on the velocities
     // just read is kept off that chain: the velocities without this row's force (base), and
     // the force before the velocity term (start).
-    const Vector2 pushA = row.normal * row.inverseMassA;
-    const Vector2 pushB = row.normal * row.inverseMassB;
-    const Vector2 baseA = bodyA.v + pushA * force;
-    const Vector2 baseB = bodyB.v - pushB * force;
-    real velocity = dot(row.normal, bodyB.v - bodyA.v);
+    const Vector2 baseA = bodyA.v + row.pushA * force;
+    const Vector2 baseB = bodyB.v - row.pushB * force;
+    // The normal velocity already scaled by relaxation / A_kk.
+    real velocity = dot(row.scaledNormal, bodyB.v - bodyA.v);
     real baseOmegaA = 0;
     real baseOmegaB = 0;
     if constexpr (turning) {
       const Turning& t = turning_[p];
-      velocity += t.armB * bodyB.omega - t.armA * bodyA.omega;
+      velocity += t.scaledArmB * bodyB.omega - t.scaledArmA * bodyA.omega;
       baseOmegaA = bodyA.omega - t.turnA * force;
       baseOmegaB = bodyB.omega - t.turnB * force;
     }
     const real start = force + row.scaledTarget;
     // Clamp the accumulated force, not the increment. No test for a zero change: the branch
     // would be unpredictable, and adding zero is cheaper than a mispredicted jump.
-    const real newForce = std::max(real(0), start - velocity * row.inverseScaled);
-    bodyA.v = baseA - pushA * newForce;
-    bodyB.v = baseB + pushB * newForce;
+    const real newForce = std::max(real(0), start - velocity);
+    bodyA.v = baseA - row.pushA * newForce;
+    bodyB.v = baseB + row.pushB * newForce;
     if constexpr (turning) {
       bodyA.omega = baseOmegaA + turning_[p].turnA * newForce;
       bodyB.omega = baseOmegaB + turning_[p].turnB * newForce;

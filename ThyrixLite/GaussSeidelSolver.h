@@ -45,25 +45,24 @@ class GaussSeidelSolver {
                          std::span<real> forces, const ContactSolverSettings& settings);
 
  private:
-  /// A row in the island's local numbering, with what a sweep needs precomputed (one cache
-  /// line in double precision).
+  /// A row in the island's local numbering, with what a sweep needs precomputed: the pushes
+  /// and the scaled normal put one multiplication less on a sweep's critical path.
   struct Row {
     std::uint32_t a;  // local body indices
     std::uint32_t b;
-    Vector2 normal;
-    real inverseMassA;
-    real inverseMassB;
-    real scaledTarget;   // c * inverseScaled
-    real response;       // A_kk
-    real inverseScaled;  // relaxation / A_kk
+    Vector2 pushA;         // change of A's velocity per unit force, subtracted: n / m_A
+    Vector2 pushB;         // of B's, added: n / m_B
+    Vector2 scaledNormal;  // n * relaxation / A_kk
+    real scaledTarget;     // c * relaxation / A_kk
+    real response;         // A_kk
   };
   /// The turning part of a row, kept apart: islands where no contact has a lever arm (circles
   /// and borders) never read it.
   struct Turning {
-    real armA;  // w = n . (vB - vA) + armB omegaB - armA omegaA
-    real armB;
-    real turnA;  // change of omegaA per unit force: -armA / IA
-    real turnB;  // of omegaB: armB / IB
+    real scaledArmA;  // relaxation / A_kk times the arms of w = n . (vB - vA) + armB omegaB -
+    real scaledArmB;  // armA omegaA
+    real turnA;       // change of omegaA per unit force: -armA / IA
+    real turnB;       // of omegaB: armB / IB
   };
   /// A body's velocity in the island's local numbering.
   struct Body {
