@@ -125,7 +125,6 @@ void Simulator::reserveContacts(std::size_t count) {
   islands_.reserve(objects.size(), count);
   baraff_.reserve(
       std::min(count, static_cast<std::size_t>(std::max(settings_.baraffMaxContacts, 0))));
-  lastForces_.reserve(count);
   gaussSeidel_.reserve(objects.size(), count);
   if (hasMultiBodies_) {  // general islands: their matrix and the objects' sides
     const std::size_t island = std::min(count, std::size_t{256});
@@ -163,6 +162,8 @@ void Simulator::advanceTime() {
 void Simulator::eraseContacts() {
   // Last step's contacts are what rest skipping reuses: kept aside, not destroyed.
   previousValid_ = contactsComplete_;
+  previousSolved_ = contactsComplete_ && contactsSolved_;
+  contactsSolved_ = false;
   if (contactsComplete_) std::swap(contacts.items_, previousContacts_);
   contacts.items_.clear();
   contactsComplete_ = false;

@@ -4,7 +4,6 @@
 
 #include <ThyrixLite/BaraffSolver.h>
 #include <ThyrixLite/BroadPhase.h>
-#include <ThyrixLite/ContactForceCache.h>
 #include <ThyrixLite/ContactSolver.h>
 #include <ThyrixLite/GaussSeidelSolver.h>
 #include <ThyrixLite/Integrator.h>
@@ -178,6 +177,10 @@ class Simulator : public World {
   void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void indexPreviousContacts();
+  /// The force the contact of last step with @p contact's identity (shapes and feature)
+  /// ended with, or 0; looks first at position @p hint of the last step's contacts, and
+  /// leaves @p hint just past the contact found.
+  [[nodiscard]] real previousForce(const GlobalContactInfo& contact, std::size_t& hint);
   void clearContactLists();
   void solveIsland(std::span<const std::uint32_t> island);
   void solveGeneralIsland(std::span<const std::uint32_t> island);
@@ -224,6 +227,8 @@ class Simulator : public World {
   bool contactsComplete_ = false;  // `contacts` holds exactly one detection's contacts
   bool previousValid_ = false;     // previousContacts_ is the last detection's, complete
   bool previousIndexed_ = false;   // previousStart_ and previousOrder_ are up to date
+  bool contactsSolved_ = false;    // the solver wrote the forces of `contacts`
+  bool previousSolved_ = false;    // previousContacts_ carries its solve's forces (warm start)
   // The objects that do not keep PhysicalObject's step hooks, in registration order (the
   // others' hooks are called without virtual calls).
   std::vector<std::uint32_t> customObjects_;
@@ -241,7 +246,6 @@ class Simulator : public World {
   Islands islands_;
   BaraffSolver baraff_;
   GaussSeidelSolver gaussSeidel_;
-  ContactForceCache lastForces_;
 
   // Multi-body objects (articulated agents): their islands are solved on an explicit matrix.
   std::vector<MultiBodyObject*> multiBodies_;  // per object, null for a rigid body

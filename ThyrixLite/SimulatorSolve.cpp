@@ -23,8 +23,8 @@ void Simulator::solveContacts() {
       internalOwner_.resize(internal_.size(), i);
     }
   }
+  contactsSolved_ = true;  // from here on, whatever returns: a force free contact says 0
   if (contacts.empty() && internal_.empty()) {
-    lastForces_.clear();
     updateTactileSensors();
     return;
   }
@@ -67,7 +67,6 @@ void Simulator::solveContacts() {
         return row.normalVelocity({a.v, a.omega}, {b.v, b.omega}) >= row.target;
       });
   if (forceFree) {  // no force: contacts and object contact lists already say 0
-    lastForces_.clear();
     updateTactileSensors();
     return;
   }
@@ -113,13 +112,8 @@ void Simulator::solveContacts() {
     object.v = bodies_[i].v;
     object.omega = bodies_[i].omega;
   }
-  lastForces_.reset(contacts.size());
-  for (std::size_t k = 0; k < contacts.size(); ++k) {
-    GlobalContactInfo& c = contacts.items_[k];
-    c.force = rows_[k].force;
-    if (c.force > 0)
-      lastForces_.insert(ContactForceCache::key(c.shapeA, c.shapeB, c.feature), c.force);
-  }
+  // The contacts keep their forces: next step's warm start reads them there.
+  for (std::size_t k = 0; k < contacts.size(); ++k) contacts.items_[k].force = rows_[k].force;
   for (ContactInfo& info : objectContacts_) info.force = rows_[info.index].force;
   updateTactileSensors();
 }
@@ -213,6 +207,27 @@ void Simulator::solveGeneralIsland(std::span<const std::uint32_t> island) {
   });
 }
 
+real Simulator::previousForce(const GlobalContactInfo& contact, std::size_t& hint) {
+  const auto same = [&contact](const GlobalContactInfo& previous) {
+    return previous.shapeA == contact.shapeA && previous.shapeB == contact.shapeB &&
+           previous.feature == contact.feature;
+  };
+  if (hint < previousContacts_.size() && same(previousContacts_[hint]))
+    return previousContacts_[hint++].force;
+  // Out of order: among last step's contacts of the same shape A (a pair's shapes are ordered
+  // the same way in every detection).
+  if (!previousIndexed_) indexPreviousContacts();
+  for (std::uint32_t k = previousStart_[contact.shapeA]; k < previousStart_[contact.shapeA + 1];
+       ++k) {
+    const std::uint32_t index = previousOrder_[k];
+    if (same(previousContacts_[index])) {
+      hint = index + std::size_t{1};
+      return previousContacts_[index].force;
+    }
+  }
+  return 0;
+}
+
 void Simulator::updateTactileSensors() {
   if (sensingPrimitives_.empty()) return;  // no tactile sensor in the world
   for (Primitive* primitive : sensingPrimitives_) primitive->tactile_.clear();
@@ -239,12 +254,11 @@ void Simulator::solveIsland(std::span<const std::uint32_t> island) {
     if (solved) return;
     ++statistics_.baraffFallbacks;
   }
-  if (settings_.warmStart) {
-    std::size_t hint = 0;  // the cache keeps the last contact order, close to this one
+  if (settings_.warmStart && previousSolved_) {
+    std::size_t hint = 0;  // detection lists the contacts in nearly last step's order
     for (const std::uint32_t k : island) {
-      const GlobalContactInfo& c = contacts.items_[k];
       ContactConstraint& row = rows_[k];
-      row.force = lastForces_.find(ContactForceCache::key(c.shapeA, c.shapeB, c.feature), hint);
+      row.force = previousForce(contacts.items_[k], hint);
       if (row.force > 0) row.applyImpulse(row.force, bodies_[row.a], bodies_[row.b]);
     }
   }
