@@ -119,6 +119,12 @@ void GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
     const real inverseScaled = response > 0 ? relaxation / response : 0;
     const std::uint32_t a = localIndex(c.a, bodyA);
     const std::uint32_t b = localIndex(c.b, bodyB);
+    // The starting force's velocities, added here in island order (no pass of its own).
+    const real force = c.force;
+    local[a].v -= c.normal * (force * bodyA.inverseMass);
+    local[a].omega -= c.armA * force * bodyA.inverseInertia;
+    local[b].v += c.normal * (force * bodyB.inverseMass);
+    local[b].omega += c.armB * force * bodyB.inverseInertia;
     rows_[q] = {a,
                 b,
                 c.normal * bodyA.inverseMass,
@@ -130,7 +136,7 @@ void GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
     turning_[q] = {c.armA * inverseScaled, c.armB * inverseScaled, -c.armA * bodyA.inverseInertia,
                    c.armB * bodyB.inverseInertia};
     turning = turning || turns(c.armA, bodyA) || turns(c.armB, bodyB);
-    forces_[q] = c.force;
+    forces_[q] = force;
   }
   turningIsland_ = turning;
   bodyCount_ = used;

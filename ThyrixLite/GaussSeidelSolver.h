@@ -14,7 +14,8 @@ namespace thyrix {
 /// Projected Gauss-Seidel (Preda and Florian 2005): sweeps the contacts in a fixed order,
 /// `f_k <- max(0, f_k - (w_k - c_k) / A_kk)`, updating the two bodies' velocities after each
 /// contact, so the matrix A is never formed. Starts from the forces already in the rows
-/// (warm start) with the body velocities consistent with them.
+/// (warm start): the body velocities given are those without them, and the solver adds
+/// theirs.
 ///
 /// With ContactSolverSettings::accelerateGaussSeidel, each sweep is followed by a conjugate
 /// step, the nonsmooth nonlinear conjugate gradient method (NNCG) of Silcowitz, Niebe and

@@ -256,11 +256,8 @@ void Simulator::solveIsland(std::span<const std::uint32_t> island) {
   }
   if (settings_.warmStart && previousSolved_) {
     std::size_t hint = 0;  // detection lists the contacts in nearly last step's order
-    for (const std::uint32_t k : island) {
-      ContactConstraint& row = rows_[k];
-      row.force = previousForce(contacts.items_[k], hint);
-      if (row.force > 0) row.applyImpulse(row.force, bodies_[row.a], bodies_[row.b]);
-    }
+    // The forces alone: Gauss-Seidel adds their velocities as it copies the island.
+    for (const std::uint32_t k : island) rows_[k].force = previousForce(contacts.items_[k], hint);
   }
   statistics_.gaussSeidelSweeps +=
       static_cast<std::size_t>(gaussSeidel_.solve(island, rows_, bodies_, settings_));
