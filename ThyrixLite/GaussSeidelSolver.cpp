@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace thyrix {
 namespace {
@@ -165,33 +166,32 @@ GaussSeidelSolver::SweepResult GaussSeidelSolver::sweep() {
     Body& bodyA = bodies_[row.a];
     Body& bodyB = bodies_[row.b];
     const real force = forces_[p];
-    // Consecutive rows share bodies, so a sweep is bound by the latency of the chain
-    // velocity -> new force -> velocity. Everything that does not depend on the velocities
-    // just read is kept off that chain: the velocities without this row's force (base), and
-    // the force before the velocity term (start).
-    const Vector2 baseA = bodyA.v + row.pushA * force;
-    const Vector2 baseB = bodyB.v - row.pushB * force;
+    const real start = force + row.scaledTarget;
     // The normal velocity already scaled by relaxation / A_kk.
     real velocity = dot(row.scaledNormal, bodyB.v - bodyA.v);
-    real baseOmegaA = 0;
-    real baseOmegaB = 0;
-    if constexpr (turning) {
-      const Turning& t = turning_[p];
-      velocity += t.scaledArmB * bodyB.omega - t.scaledArmA * bodyA.omega;
-      baseOmegaA = bodyA.omega - t.turnA * force;
-      baseOmegaB = bodyB.omega - t.turnB * force;
-    }
-    const real start = force + row.scaledTarget;
-    // Clamp the accumulated force, not the increment. No test for a zero change: the branch
-    // would be unpredictable, and adding zero is cheaper than a mispredicted jump.
-    const real newForce = std::max(real(0), start - velocity);
-    bodyA.v = baseA - row.pushA * newForce;
-    bodyB.v = baseB + row.pushB * newForce;
-    if constexpr (turning) {
-      bodyA.omega = baseOmegaA + turning_[p].turnA * newForce;
-      bodyB.omega = baseOmegaB + turning_[p].turnB * newForce;
-    }
+    if constexpr (turning)
+      velocity += turning_[p].scaledArmB * bodyB.omega - turning_[p].scaledArmA * bodyA.omega;
+    // The new force max(0, start - velocity) is start - reached; the accumulated force is
+    // clamped, not the increment. No test for a zero change: the branch would be
+    // unpredictable, and adding zero is cheaper than a mispredicted jump.
+    const real reached = std::min(start, velocity);
+    const real newForce = start - reached;
     const real change = newForce - force;
+    if constexpr (std::is_same_v<real, double>) {
+      // Consecutive rows share bodies, so a sweep is bound by the latency of the chain
+      // velocity -> reached -> velocity. Written as v + push (scaledTarget - reached), the
+      // new velocity waits only for a multiplication and an addition after reached. (In
+      // float, these offsets' rounding would add up over a long solve: the change is used.)
+      bodyA.v = bodyA.v - row.pushA * row.scaledTarget + row.pushA * reached;
+      bodyB.v = bodyB.v + row.pushB * row.scaledTarget - row.pushB * reached;
+      if constexpr (turning) {
+        const Turning& t = turning_[p];
+        bodyA.omega = bodyA.omega + t.turnA * row.scaledTarget - t.turnA * reached;
+        bodyB.omega = bodyB.omega + t.turnB * row.scaledTarget - t.turnB * reached;
+      }
+    } else {
+      apply<turning>(p, change);
+    }
     forces_[p] = newForce;
     changes_[p] = change;
     result.largestChange = std::max(result.largestChange, std::abs(change) * row.response);
