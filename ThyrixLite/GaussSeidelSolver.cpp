@@ -206,10 +206,10 @@ void GaussSeidelSolver::conjugateStep(real beta) {
     const real step = beta * direction_[p];
     direction_[p] = step + changes_[p];
     // The forces stay feasible (the next sweep would project them anyway), and the velocities
-    // follow them.
-    const real force = std::max(real(0), forces_[p] + step);
-    const real change = force - forces_[p];
-    forces_[p] = force;
+    // follow them. Written as the change max(step, -f), the clamp compiles without a branch
+    // (max(0, f + step) did not, and mispredicted on rows at the bound).
+    const real change = std::max(step, -forces_[p]);
+    forces_[p] += change;
     apply<turning>(p, change);
   }
 }
