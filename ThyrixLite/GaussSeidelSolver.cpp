@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 
 namespace thyrix {
 namespace {
@@ -173,27 +172,15 @@ GaussSeidelSolver::SweepResult GaussSeidelSolver::sweep() {
     real velocity = dot(row.scaledNormal, bodyB.v - bodyA.v);
     if constexpr (turning)
       velocity += turning_[p].scaledArmB * bodyB.omega - turning_[p].scaledArmA * bodyA.omega;
-    // The new force max(0, start - velocity) is start - reached; the accumulated force is
-    // clamped, not the increment. No test for a zero change: the branch would be
-    // unpredictable, and adding zero is cheaper than a mispredicted jump.
+    // The new force max(0, start - velocity) is start - min(start, velocity): the accumulated
+    // force is clamped, not the increment. The velocities follow its change, which is
+    // scaledTarget - min(start, velocity): the chain velocity -> min -> velocity, on which
+    // a row sharing a body waits, stays two operations long. No test for a zero change: the
+    // branch would be unpredictable, and adding zero is cheaper than a mispredicted jump.
     const real reached = std::min(start, velocity);
     const real newForce = start - reached;
     const real change = newForce - force;
-    if constexpr (std::is_same_v<real, double>) {
-      // Consecutive rows share bodies, so a sweep is bound by the latency of the chain
-      // velocity -> reached -> velocity. Written as v + push (scaledTarget - reached), the
-      // new velocity waits only for a multiplication and an addition after reached. (In
-      // float, these offsets' rounding would add up over a long solve: the change is used.)
-      bodyA.v = bodyA.v - row.pushA * row.scaledTarget + row.pushA * reached;
-      bodyB.v = bodyB.v + row.pushB * row.scaledTarget - row.pushB * reached;
-      if constexpr (turning) {
-        const Turning& t = turning_[p];
-        bodyA.omega = bodyA.omega + t.turnA * row.scaledTarget - t.turnA * reached;
-        bodyB.omega = bodyB.omega + t.turnB * row.scaledTarget - t.turnB * reached;
-      }
-    } else {
-      apply<turning>(p, change);
-    }
+    apply<turning>(p, row.scaledTarget - reached);
     forces_[p] = newForce;
     changes_[p] = change;
     result.largestChange = std::max(result.largestChange, std::abs(change) * row.response);
