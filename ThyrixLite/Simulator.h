@@ -175,6 +175,22 @@ class Simulator : public World {
   /// a border moved or there are more than a few.
   bool findBorderReachTogether(std::size_t words);
   void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);
+  /// Two circles that addContacts would test exactly, as it would (A first).
+  struct CirclePair {
+    Vector2 centreA;
+    Vector2 centreB;
+    real radiusA;
+    real radiusB;
+    real margin;
+    std::uint32_t shapeA;
+    std::uint32_t shapeB;
+  };
+  static constexpr std::size_t circleBatch = 64;  // CirclePairs kept before they are tested
+  /// addContacts' tests for two circles before the exact one (whether shapes of one body
+  /// may touch is settled by the caller); true, with @p pair filled, if it is to be run.
+  bool circlesInReach(std::uint32_t shapeA, std::uint32_t shapeB, CirclePair& pair) const;
+  /// addContacts' exact test and contacts for each of @p pairs, in order.
+  void addCirclePairs(std::span<const CirclePair> pairs);
   void reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void indexPreviousContacts();
   /// The force the contact of last step with @p contact's identity (shapes and feature)

@@ -37,20 +37,43 @@ void Simulator::detectContacts() {
   previousIndexed_ = false;
   statistics_.reusedContacts = 0;
   broadPhase_.findPairs(gridBoxes_, gridMovedBits_, pairs_);
+  // The pairs of two circles in reach (most of a crowd's) are batched: their square roots and
+  // divisions, in a short loop of their own, overlap from pair to pair (measured: one pair
+  // at a time, each waited for the last). A batch is emptied before any other pair adds
+  // contacts, so the order is the pairs'.
+  CirclePair batch[circleBatch];
+  std::size_t batched = 0;
+  const auto flush = [&] {
+    addCirclePairs(std::span<const CirclePair>(batch, batched));
+    batched = 0;
+  };
   for (const BoxPair& pair : pairs_) {
     const std::uint32_t a = gridShapes_[pair.first];
     const std::uint32_t b = gridShapes_[pair.second];
     // Pairs within one body are settled here, without a call: a chain's neighbouring links
     // overlap in every step and never touch.
-    const std::uint32_t body = shapes_[a].body;
-    if (body == shapes_[b].body &&
-        !ownShapesMayTouch(multiBodies_[body], bodyStates_[body].firstShape, a, b))
+    const Shape& sa = shapes_[a];
+    const Shape& sb = shapes_[b];
+    if (sa.body == sb.body) {
+      // (reuseContacts would test such a pair again too.)
+      if (ownShapesMayTouch(multiBodies_[sa.body], bodyStates_[sa.body].firstShape, a, b)) {
+        flush();
+        addContacts(a, b);
+      }
       continue;
-    if (reuse && (shapeMoved_[a] | shapeMoved_[b]) == 0)
+    }
+    if (reuse && (shapeMoved_[a] | shapeMoved_[b]) == 0) {
+      flush();
       reuseContacts(a, b);
-    else
+    } else if (sa.type == ShapeType::Circle && sb.type == ShapeType::Circle) {
+      if (!circlesInReach(a, b, batch[batched])) continue;
+      if (++batched == circleBatch) flush();
+    } else {
+      flush();
       addContacts(a, b);
+    }
   }
+  flush();
   findBorderContacts(reuse);
   contactsComplete_ = fromEmpty;
   previousValid_ = false;  // used: the next detection compares against this one
@@ -196,6 +219,39 @@ void Simulator::indexPreviousContacts() {
   previousIndexed_ = true;
 }
 
+// Inline: the detection loop calls it for every pair of two circles.
+inline bool Simulator::circlesInReach(std::uint32_t shapeA, std::uint32_t shapeB,
+                                      CirclePair& pair) const {
+  const Shape& a = shapes_[shapeA];
+  const Shape& b = shapes_[shapeB];
+  if (!a.movable && !b.movable) return false;
+  if (a.group != 0 && a.group == b.group) return false;
+  const ShapeGeometry& ga = geometry_[shapeA];
+  const ShapeGeometry& gb = geometry_[shapeB];
+  const real margin = std::min(ga.margin, gb.margin) + ga.travel + gb.travel;
+  // Some candidate pairs of a crowd are out of reach: a conservative test on squared
+  // distances (no square root, no call) drops them; the rest get the exact test.
+  const Vector2 d = gb.p0 - ga.p0;
+  const real reach = (ga.radius + gb.radius + margin) * (1 + 64 * realEpsilon);
+  if (d.lengthSquared() > reach * reach) return false;
+  pair = {ga.p0, gb.p0, ga.radius, gb.radius, margin, shapeA, shapeB};
+  return true;
+}
+
+void Simulator::addCirclePairs(std::span<const CirclePair> pairs) {
+  for (const CirclePair& pair : pairs) {
+    const Manifold manifold =
+        collideCircles(pair.centreA, pair.radiusA, pair.centreB, pair.radiusB, pair.margin);
+    if (manifold.count == 0) continue;
+    const ManifoldPoint& p = manifold.points[0];
+    const Shape& a = shapes_[pair.shapeA];
+    const Shape& b = shapes_[pair.shapeB];
+    contacts.items_.push_back({a.object, b.object, a.primitive, b.primitive, a.body, b.body,
+                               pair.shapeA, pair.shapeB, p.feature, p.point, manifold.normal,
+                               p.depth, 0});
+  }
+}
+
 void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
   if (shapes_[shapeB].type < shapes_[shapeA].type) std::swap(shapeA, shapeB);
   const Shape& a = shapes_[shapeA];
@@ -226,12 +282,8 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
       break;
     case ShapeType::Circle:
       if (b.type == ShapeType::Circle) {
-        // Most candidate pairs of a crowd are out of reach: a conservative test on squared
-        // distances (no square root, no call) drops them; the rest get the exact test.
-        const Vector2 d = gb.p0 - ga.p0;
-        const real reach = (ga.radius + gb.radius + margin) * (1 + 64 * realEpsilon);
-        if (d.lengthSquared() > reach * reach) return;
-        append(collideCircles(ga.p0, ga.radius, gb.p0, gb.radius, margin));
+        CirclePair pair;
+        if (circlesInReach(shapeA, shapeB, pair)) addCirclePairs({&pair, 1});
       } else {
         append(collideCircleCapsule(ga.p0, ga.radius, gb.p0, gb.p1, gb.radius, margin));
       }
