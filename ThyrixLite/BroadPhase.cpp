@@ -286,7 +286,10 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
     const auto testRange = [&](std::uint32_t begin, std::uint32_t end) {
       for (std::uint32_t k = begin; k < end; ++k) {
         const std::uint32_t j = sorted[k];
-        out[n] = {std::min(i, j), std::max(i, j)};
+        // min and max by a mask: GCC made std::min/max a branch, which j's side of i makes
+        // random to the predictor.
+        const std::uint32_t swap = (i ^ j) & (std::uint32_t{0} - std::uint32_t{j < i});
+        out[n] = {i ^ swap, j ^ swap};
         n += overlaps(j);
       }
     };
