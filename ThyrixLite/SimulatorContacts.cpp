@@ -105,6 +105,27 @@ std::uint64_t reachesBehind(const BorderLine& line, Vector2 centre, Vector2 half
   return std::uint64_t{dot(centre - line.point, line.normal) - extent <= 0};
 }
 
+/// Sets in @p reach (one word per border of @p lines) the bits of @p retest whose boxes (from
+/// @p boxes, the word's first) reach behind each border. A whole word of moved shapes (a crowd
+/// in motion) is a plain loop over its 64 boxes, without the walk over its bits.
+template <std::size_t Borders>
+void reachWord(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t retest,
+               std::uint64_t* reach) {
+  const auto test = [&](std::size_t j, std::uint64_t bit) {
+    const BoundingBox& box = boxes[j];
+    const Vector2 centre = (box.lower + box.upper) * real(0.5);
+    const Vector2 half = (box.upper - box.lower) * real(0.5);
+    for (std::size_t k = 0; k < Borders; ++k)
+      reach[k] |= bit & (std::uint64_t{0} - reachesBehind(lines[k], centre, half));
+  };
+  if (retest == ~std::uint64_t{0}) {
+    for (std::size_t j = 0; j < 64; ++j) test(j, std::uint64_t{1} << j);
+    return;
+  }
+  for (std::uint64_t bits = retest; bits != 0; bits &= bits - 1)
+    test(static_cast<std::size_t>(std::countr_zero(bits)), bits & (~bits + 1));
+}
+
 }  // namespace
 
 void Simulator::findBorderContacts(bool reuse) {
@@ -173,14 +194,20 @@ bool Simulator::findBorderReachTogether(std::size_t words) {
     if (retest == 0) continue;
     std::uint64_t reach[fusedBorders];
     for (std::size_t k = 0; k < borders; ++k) reach[k] = borderReach_[k * words + w] & ~retest;
-    for (std::uint64_t bits = retest; bits != 0; bits &= bits - 1) {
-      const std::size_t i = 64 * w + static_cast<std::size_t>(std::countr_zero(bits));
-      const BoundingBox& box = gridBoxes_[i];
-      const Vector2 centre = (box.lower + box.upper) * real(0.5);
-      const Vector2 half = (box.upper - box.lower) * real(0.5);
-      const std::uint64_t bit = bits & (~bits + 1);
-      for (std::size_t k = 0; k < borders; ++k)
-        reach[k] |= bit & (std::uint64_t{0} - reachesBehind(lines[k], centre, half));
+    const BoundingBox* const boxes = gridBoxes_.data() + 64 * w;
+    switch (borders) {
+      case 1:
+        reachWord<1>(lines, boxes, retest, reach);
+        break;
+      case 2:
+        reachWord<2>(lines, boxes, retest, reach);
+        break;
+      case 3:
+        reachWord<3>(lines, boxes, retest, reach);
+        break;
+      default:
+        reachWord<fusedBorders>(lines, boxes, retest, reach);
+        break;
     }
     for (std::size_t k = 0; k < borders; ++k) borderReach_[k * words + w] = reach[k];
   }
