@@ -166,7 +166,8 @@ class Simulator : public World {
   /// that has several shapes (whose poses are then compared one by one).
   void updateBody(std::uint32_t index, bool changed, bool newFilters);
   void addCachedBox(std::uint32_t shape, Vector2& boxMin, Vector2& boxMax) const;
-  bool updateShape(std::uint32_t shape, bool poseKnown, Vector2& lower, Vector2& upper);
+  bool updateShape(std::uint32_t shape, bool poseKnown, bool standalone, Vector2& lower,
+                   Vector2& upper);
   void findBorderContacts(bool reuse);
   /// Border @p k's reach bits over @p words words of shapes: every shape's retested if the
   /// border moved, else the moved shapes'.

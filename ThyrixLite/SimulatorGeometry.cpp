@@ -52,7 +52,9 @@ inline void Simulator::addCachedBox(std::uint32_t s, Vector2& boxMin, Vector2& b
 // half-plane (unbounded: no box).
 // Radius and margin are not recomputed: they are in geometry_ since registration (the margin
 // since the last change of the fraction), and the half length is in shapePoses_.
-inline bool Simulator::updateShape(std::uint32_t s, bool poseKnown, Vector2& lower,
+// With @p standalone (the shape is its body) a circle's pose is not noted: only a composed
+// body's shapes (compared one by one) and capsules (their axis) read it.
+inline bool Simulator::updateShape(std::uint32_t s, bool poseKnown, bool standalone, Vector2& lower,
                                    Vector2& upper) {
   Primitive& primitive = *shapes_[s].primitive;
   ShapePose& pose = shapePoses_[s];
@@ -72,6 +74,10 @@ inline bool Simulator::updateShape(std::uint32_t s, bool poseKnown, Vector2& low
     case ShapeType::Circle:
       g.p0 = r;  // a circle's geometry does not depend on its angle
       g.p1 = r;  // (unread: lets the box below be the capsule's, min and max of equal ends)
+      if (!standalone) {
+        pose.r = r;
+        pose.alpha = alpha;
+      }
       break;
     case ShapeType::Capsule:
       // The half axis turns with the angle only: a capsule that slides keeps it.
@@ -81,10 +87,10 @@ inline bool Simulator::updateShape(std::uint32_t s, bool poseKnown, Vector2& low
         pose.axis = primitive.direction() * pose.halfLength;
       g.p0 = r - pose.axis;
       g.p1 = r + pose.axis;
+      pose.r = r;
+      pose.alpha = alpha;
       break;
   }
-  pose.r = r;
-  pose.alpha = alpha;
   // The same boxes as before for a circle: min and max of two equal values are that value.
   const Vector2 least{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)};
   const Vector2 most{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)};
@@ -151,7 +157,7 @@ THYRIX_FORCE_INLINE void Simulator::updateBody(std::uint32_t index, bool changed
     // A shape that travelled in the last step has a wider margin, narrowed when it stops.
     if (!changed && geometry_[s].travel == 0) return;
     shapeMoved[s] = 1;
-    if (updateShape(s, known, lower, upper)) {
+    if (updateShape(s, known, true, lower, upper)) {
       boxMin = {std::min(boxMin.x, lower.x), std::min(boxMin.y, lower.y)};
       boxMax = {std::max(boxMax.x, upper.x), std::max(boxMax.y, upper.y)};
     }
@@ -181,7 +187,7 @@ THYRIX_FORCE_INLINE void Simulator::updateBody(std::uint32_t index, bool changed
       for (std::uint32_t t = state.firstShape; t < s; ++t) addCachedBox(t, boxMin, boxMax);
     anyMoved = true;
     primitive.followOwner();
-    if (!updateShape(s, known, lower, upper)) continue;
+    if (!updateShape(s, known, false, lower, upper)) continue;
     boxMin = {std::min(boxMin.x, lower.x), std::min(boxMin.y, lower.y)};
     boxMax = {std::max(boxMax.x, upper.x), std::max(boxMax.y, upper.y)};
   }
