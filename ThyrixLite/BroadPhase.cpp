@@ -179,21 +179,28 @@ void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, real extent
   std::int64_t lowY = INT64_MAX;
   std::int64_t highX = INT64_MIN;
   std::int64_t highY = INT64_MIN;
+  // Through local pointers, the coordinates kept in registers (GCC reloaded the buffers'
+  // pointers and the stored coordinates at every box), both quotients in one division.
+  std::uint32_t* const cellOfBox = cellOfBox_.data();
+  std::int64_t* const cellX = cellX_.data();
+  std::int64_t* const cellY = cellY_.data();
   for (std::uint32_t i = 0; i < count; ++i) {
     const BoundingBox& box = boxes[i];
     if (extent(box) > cellSize) {
-      cellOfBox_[i] = oversizedMark;
+      cellOfBox[i] = oversizedMark;
       oversized_.push_back(i);
       continue;
     }
-    const Vector2 centre = (box.lower + box.upper) * real(0.5);
-    cellX_[i] = floorToInt(centre.x / cellSize);
-    cellY_[i] = floorToInt(centre.y / cellSize);
-    cellOfBox_[i] = 0;
-    lowX = std::min(lowX, cellX_[i]);
-    lowY = std::min(lowY, cellY_[i]);
-    highX = std::max(highX, cellX_[i]);
-    highY = std::max(highY, cellY_[i]);
+    const Vector2 q = (box.lower + box.upper) * real(0.5) / cellSize;  // the centre, in cells
+    const std::int64_t x = floorToInt(q.x);
+    const std::int64_t y = floorToInt(q.y);
+    cellX[i] = x;
+    cellY[i] = y;
+    cellOfBox[i] = 0;
+    lowX = std::min(lowX, x);
+    lowY = std::min(lowY, y);
+    highX = std::max(highX, x);
+    highY = std::max(highY, y);
   }
 
   // One cell of padding on every side, so that the neighbours of every cell exist.
