@@ -23,7 +23,9 @@ void Simulator::solveContacts() {
       internalOwner_.resize(internal_.size(), i);
     }
   }
-  contactsSolved_ = true;  // from here on, whatever returns: a force free contact says 0
+  // Whichever way this returns, the contacts' forces are this solve's (zero where none is
+  // needed): the next step's warm start may read them.
+  contactsSolved_ = true;
   if (contacts.empty() && internal_.empty()) {
     updateTactileSensors();
     return;
