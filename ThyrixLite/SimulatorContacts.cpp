@@ -182,6 +182,7 @@ bool Simulator::findBorderReachTogether(std::size_t words) {
   // branch). The same test as findBorderReach: the same bits. (A world of up to 64 shapes
   // keeps that loop: measured, the arena mispredicted more branches here.)
   const std::size_t borders = borderShapes_.size();
+  if (borders == 0) return true;  // nothing to reach
   if (borders > fusedBorders) return false;
   BorderLine lines[fusedBorders];
   for (std::size_t k = 0; k < borders; ++k) {
@@ -192,9 +193,10 @@ bool Simulator::findBorderReachTogether(std::size_t words) {
   for (std::size_t w = 0; w < words; ++w) {
     const std::uint64_t retest = gridMovedBits_[w];
     if (retest == 0) continue;
-    std::uint64_t reach[fusedBorders];
+    std::uint64_t reach[fusedBorders] = {};
     for (std::size_t k = 0; k < borders; ++k) reach[k] = borderReach_[k * words + w] & ~retest;
     const BoundingBox* const boxes = gridBoxes_.data() + 64 * w;
+    static_assert(fusedBorders == 4, "a case per border count");
     switch (borders) {
       case 1:
         reachWord<1>(lines, boxes, retest, reach);
@@ -205,8 +207,8 @@ bool Simulator::findBorderReachTogether(std::size_t words) {
       case 3:
         reachWord<3>(lines, boxes, retest, reach);
         break;
-      default:
-        reachWord<fusedBorders>(lines, boxes, retest, reach);
+      default:  // fusedBorders
+        reachWord<4>(lines, boxes, retest, reach);
         break;
     }
     for (std::size_t k = 0; k < borders; ++k) borderReach_[k * words + w] = reach[k];
