@@ -194,10 +194,14 @@ class Simulator : public World {
   void addCirclePairs(std::span<const CirclePair> pairs);
   void reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void indexPreviousContacts();
-  /// The force the contact of last step with @p contact's identity (shapes and feature)
-  /// ended with, or 0; looks first at position @p hint of the last step's contacts, and
-  /// leaves @p hint just past the contact found.
-  [[nodiscard]] real previousForce(const GlobalContactInfo& contact, std::size_t& hint);
+  /// Where in previousContacts_ the last step's contacts between @p shapeA and @p shapeB
+  /// are, in their order of detection.
+  std::span<const std::uint32_t> previousContactsOf(std::uint32_t shapeA, std::uint32_t shapeB);
+  /// The force the last step's contact with @p contact's identity (shapes and feature) ended
+  /// with, or 0. Looks first at @p hint (left just past the contact found) and at
+  /// @p position, @p contact's own place in `contacts`.
+  [[nodiscard]] real previousForce(const GlobalContactInfo& contact, std::size_t position,
+                                   std::size_t& hint);
   void clearContactLists();
   void solveIsland(std::span<const std::uint32_t> island);
   void solveGeneralIsland(std::span<const std::uint32_t> island);
@@ -238,7 +242,9 @@ class Simulator : public World {
   std::size_t reachShapes_ = 0;               // grid shapes borderReach_ was computed for
   std::vector<GlobalContactInfo> previousContacts_;  // the last detection's contacts
   std::vector<std::uint32_t> previousStart_;         // previous contacts by shape A: offsets
-  std::vector<std::uint32_t> previousOrder_;         // previous contacts by shape A: indices
+  std::vector<std::uint32_t> previousOrder_;         // by shape A, then B: positions
+  std::vector<std::uint32_t> previousByShapeB_;      // by shape B: the first sort's positions
+  std::size_t previousHint_ = 0;                     // the warm start's next guess
   real geometryFraction_ = 0;      // speculativeFraction the cached margins were computed with
   real geometryTravel_ = 0;        // speculativeTravel the cached travels were computed with
   bool contactsComplete_ = false;  // `contacts` holds exactly one detection's contacts

@@ -34,7 +34,8 @@ void Simulator::detectContacts() {
   // Reuse needs the last detection's complete list (eraseContacts kept it aside).
   // (Only pairs of unmoved shapes are reused: none when every shape moved.)
   const bool reuse = restSkipping && previousValid_ && fromEmpty;
-  previousIndexed_ = false;
+  previousIndexed_ = false;  // indexed at most once a detection, for the shapes of now
+  contactsSolved_ = false;   // these contacts, until the solver gives them forces
   statistics_.reusedContacts = 0;
   broadPhase_.findPairs(gridBoxes_, gridMovedBits_, pairs_);
   // The pairs of two circles in reach (most of a crowd's) are batched: their square roots and
@@ -224,28 +225,11 @@ void Simulator::reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
     addContacts(shapeA, shapeB);
     return;
   }
-  if (!previousIndexed_) indexPreviousContacts();
-  for (std::uint32_t k = previousStart_[shapeA]; k < previousStart_[shapeA + 1]; ++k) {
-    const GlobalContactInfo& previous = previousContacts_[previousOrder_[k]];
-    if (previous.shapeB != shapeB) continue;
-    contacts.items_.push_back(previous);
+  for (const std::uint32_t k : previousContactsOf(shapeA, shapeB)) {
+    contacts.items_.push_back(previousContacts_[k]);
     contacts.items_.back().force = 0;  // the solver's output, not detection's
     ++statistics_.reusedContacts;
   }
-}
-
-void Simulator::indexPreviousContacts() {
-  // Counting sort of the last detection's contacts by shape A (a pair's points stay in order).
-  previousStart_.assign(shapes_.size() + 1, 0);
-  for (const GlobalContactInfo& c : previousContacts_) ++previousStart_[c.shapeA + 1];
-  for (std::size_t s = 0; s < shapes_.size(); ++s) previousStart_[s + 1] += previousStart_[s];
-  previousOrder_.resize(previousContacts_.size());
-  for (std::uint32_t k = 0; k < previousContacts_.size(); ++k)
-    previousOrder_[previousStart_[previousContacts_[k].shapeA]++] = k;
-  // The fill advanced each start to the next shape's start: shift back.
-  for (std::size_t s = shapes_.size(); s > 0; --s) previousStart_[s] = previousStart_[s - 1];
-  previousStart_[0] = 0;
-  previousIndexed_ = true;
 }
 
 // Inline: the detection loop calls it for every pair of two circles.

@@ -26,6 +26,7 @@ void Simulator::solveContacts() {
   // Whichever way this returns, the contacts' forces are this solve's (zero where none is
   // needed): the next step's warm start may read them.
   contactsSolved_ = true;
+  previousHint_ = 0;  // the warm start's, carried from island to island
   if (contacts.empty() && internal_.empty()) {
     updateTactileSensors();
     return;
@@ -209,27 +210,6 @@ void Simulator::solveGeneralIsland(std::span<const std::uint32_t> island) {
   });
 }
 
-real Simulator::previousForce(const GlobalContactInfo& contact, std::size_t& hint) {
-  const auto same = [&contact](const GlobalContactInfo& previous) {
-    return previous.shapeA == contact.shapeA && previous.shapeB == contact.shapeB &&
-           previous.feature == contact.feature;
-  };
-  if (hint < previousContacts_.size() && same(previousContacts_[hint]))
-    return previousContacts_[hint++].force;
-  // Out of order: among last step's contacts of the same shape A (a pair's shapes are ordered
-  // the same way in every detection).
-  if (!previousIndexed_) indexPreviousContacts();
-  for (std::uint32_t k = previousStart_[contact.shapeA]; k < previousStart_[contact.shapeA + 1];
-       ++k) {
-    const std::uint32_t index = previousOrder_[k];
-    if (same(previousContacts_[index])) {
-      hint = index + std::size_t{1};
-      return previousContacts_[index].force;
-    }
-  }
-  return 0;
-}
-
 void Simulator::updateTactileSensors() {
   if (sensingPrimitives_.empty()) return;  // no tactile sensor in the world
   for (Primitive* primitive : sensingPrimitives_) primitive->tactile_.clear();
@@ -257,9 +237,9 @@ void Simulator::solveIsland(std::span<const std::uint32_t> island) {
     ++statistics_.baraffFallbacks;
   }
   if (settings_.warmStart && previousSolved_) {
-    std::size_t hint = 0;  // detection lists the contacts in nearly last step's order
     // The forces alone: Gauss-Seidel adds their velocities as it copies the island.
-    for (const std::uint32_t k : island) rows_[k].force = previousForce(contacts.items_[k], hint);
+    for (const std::uint32_t k : island)
+      rows_[k].force = previousForce(contacts.items_[k], k, previousHint_);
   }
   statistics_.gaussSeidelSweeps +=
       static_cast<std::size_t>(gaussSeidel_.solve(island, rows_, bodies_, settings_));

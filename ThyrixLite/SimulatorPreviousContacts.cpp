@@ -1,0 +1,72 @@
+/// @file SimulatorPreviousContacts.cpp
+/// @brief The last step's contacts, found by shape pair: what rest skipping reuses and where
+/// the warm start finds each contact's last force.
+#include <ThyrixLite/Simulator.h>
+
+#include <algorithm>
+
+namespace thyrix {
+
+void Simulator::indexPreviousContacts() {
+  // Two stable counting sorts, by shape B and then by shape A: the contacts of each shape A
+  // come in order of shape B, and a pair's points in their order of detection. A lookup is
+  // then a binary search within shape A's contacts, so that a shape with many contacts (a
+  // floor under a crowd) costs a logarithm, not a scan.
+  const std::size_t count = previousContacts_.size();
+  const auto countingSort = [this, count](auto shapeOf, std::span<const std::uint32_t> from,
+                                          std::span<std::uint32_t> to) {
+    previousStart_.assign(shapes_.size() + 1, 0);
+    for (const GlobalContactInfo& c : previousContacts_) ++previousStart_[shapeOf(c) + 1];
+    for (std::size_t s = 0; s < shapes_.size(); ++s) previousStart_[s + 1] += previousStart_[s];
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::uint32_t k = from.empty() ? static_cast<std::uint32_t>(i) : from[i];
+      to[previousStart_[shapeOf(previousContacts_[k])]++] = k;
+    }
+    // The fill advanced each start to the next shape's start: shift back.
+    for (std::size_t s = shapes_.size(); s > 0; --s) previousStart_[s] = previousStart_[s - 1];
+    previousStart_[0] = 0;
+  };
+  previousByShapeB_.resize(count);
+  previousOrder_.resize(count);
+  countingSort([](const GlobalContactInfo& c) { return c.shapeB; }, {}, previousByShapeB_);
+  countingSort([](const GlobalContactInfo& c) { return c.shapeA; }, previousByShapeB_,
+               previousOrder_);
+  previousIndexed_ = true;
+}
+
+std::span<const std::uint32_t> Simulator::previousContactsOf(std::uint32_t shapeA,
+                                                             std::uint32_t shapeB) {
+  if (!previousIndexed_) indexPreviousContacts();
+  const auto begin = previousOrder_.begin() + previousStart_[shapeA];
+  const auto end = previousOrder_.begin() + previousStart_[shapeA + 1];
+  const auto first = std::partition_point(
+      begin, end, [&](std::uint32_t k) { return previousContacts_[k].shapeB < shapeB; });
+  const auto last = std::partition_point(
+      first, end, [&](std::uint32_t k) { return previousContacts_[k].shapeB == shapeB; });
+  return {first, last};
+}
+
+real Simulator::previousForce(const GlobalContactInfo& contact, std::size_t position,
+                              std::size_t& hint) {
+  const auto same = [&contact](const GlobalContactInfo& previous) {
+    return previous.shapeA == contact.shapeA && previous.shapeB == contact.shapeB &&
+           previous.feature == contact.feature;
+  };
+  // Detection lists the contacts in nearly the last step's order: the one after the last
+  // found, then the one at the same place, before a search.
+  for (const std::size_t guess : {hint, position}) {
+    if (guess < previousContacts_.size() && same(previousContacts_[guess])) {
+      hint = guess + 1;
+      return previousContacts_[guess].force;
+    }
+  }
+  for (const std::uint32_t k : previousContactsOf(contact.shapeA, contact.shapeB)) {
+    if (previousContacts_[k].feature == contact.feature) {
+      hint = std::size_t{k} + 1;
+      return previousContacts_[k].force;
+    }
+  }
+  return 0;
+}
+
+}  // namespace thyrix
