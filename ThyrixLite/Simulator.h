@@ -244,6 +244,8 @@ class Simulator : public World {
   std::vector<std::uint32_t> previousStart_;         // previous contacts by shape A: offsets
   std::vector<std::uint32_t> previousOrder_;         // by shape A, then B: positions
   std::vector<std::uint32_t> previousByShapeB_;      // by shape B: the first sort's positions
+  std::vector<std::uint32_t> previousShapeB_;        // shape B of each previousOrder_ entry
+  std::size_t previousCursor_ = 0;                   // previousOrder_ after the last pair found
   std::size_t previousHint_ = 0;                     // the warm start's next guess
   real geometryFraction_ = 0;      // speculativeFraction the cached margins were computed with
   real geometryTravel_ = 0;        // speculativeTravel the cached travels were computed with

@@ -31,19 +31,30 @@ void Simulator::indexPreviousContacts() {
   countingSort([](const GlobalContactInfo& c) { return c.shapeB; }, {}, previousByShapeB_);
   countingSort([](const GlobalContactInfo& c) { return c.shapeA; }, previousByShapeB_,
                previousOrder_);
+  // The searches read shape B from a compact array, not from the contacts' records.
+  previousShapeB_.resize(count);
+  for (std::size_t i = 0; i < count; ++i)
+    previousShapeB_[i] = previousContacts_[previousOrder_[i]].shapeB;
+  previousCursor_ = 0;
   previousIndexed_ = true;
 }
 
 std::span<const std::uint32_t> Simulator::previousContactsOf(std::uint32_t shapeA,
                                                              std::uint32_t shapeB) {
   if (!previousIndexed_) indexPreviousContacts();
-  const auto begin = previousOrder_.begin() + previousStart_[shapeA];
-  const auto end = previousOrder_.begin() + previousStart_[shapeA + 1];
-  const auto first = std::partition_point(
-      begin, end, [&](std::uint32_t k) { return previousContacts_[k].shapeB < shapeB; });
-  const auto last = std::partition_point(
-      first, end, [&](std::uint32_t k) { return previousContacts_[k].shapeB == shapeB; });
-  return {first, last};
+  const std::size_t begin = previousStart_[shapeA];
+  const std::size_t end = previousStart_[shapeA + 1];
+  const std::uint32_t* const keys = previousShapeB_.data();
+  // Pairs come in nearly the last step's order (a border's with the shapes in order): the
+  // pair's contacts usually begin where the last pair's ended. Else a binary search.
+  std::size_t first = previousCursor_;
+  if (!(first >= begin && first < end && keys[first] == shapeB &&
+        (first == begin || keys[first - 1] < shapeB)))
+    first = static_cast<std::size_t>(std::lower_bound(keys + begin, keys + end, shapeB) - keys);
+  std::size_t last = first;
+  while (last < end && keys[last] == shapeB) ++last;
+  previousCursor_ = last;
+  return std::span(previousOrder_).subspan(first, last - first);
 }
 
 real Simulator::previousForce(const GlobalContactInfo& contact, std::size_t position,
