@@ -75,6 +75,13 @@ ArticulatedBody::ArticulatedBody(real baseMass, real baseInertia,
     const int slot = links_[i].parent + 1;  // the base, -1, is at slot 0
     parentSlot_[i] = static_cast<std::size_t>(slot);
   }
+  // A link passes its terms through its parent's slot unless its parent is at slot i, the
+  // body visited just after it (ArticulatedBodyPasses.cpp): link i - 1, or the base for link 0.
+  gathers_.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    if (parentSlot_[i] != i) gathers_[parentSlot_[i]] = 1;
+  for (std::size_t slot = 0; slot <= n; ++slot)
+    if (gathers_[slot] != 0) gatheringSlots_.push_back(slot);
   q_.assign(n, 0);
   origin_.assign(n + 1, Vector2{});
   angle_.assign(n + 1, 0);
@@ -200,12 +207,15 @@ void ArticulatedBody::solve(std::span<const real> jointTorques,
   out.resize(linkCount());
 
   // The inward pass adds the wrenches to the bias terms as it visits the bodies.
-  std::fill(bias_.begin(), bias_.end(), Vector3{});
-  if (jointTorques.empty())
+  // Only the slots that gather children's terms are read (gathers_); the torques are read
+  // where they are.
+  clearGatheringSlots(bias_);
+  const real* torques = jointTorques.data();
+  if (jointTorques.empty()) {
     std::fill(jointTorque_.begin(), jointTorque_.end(), real(0));
-  else
-    std::copy(jointTorques.begin(), jointTorques.end(), jointTorque_.begin());
-  biasAndOutwardPasses(externalWrenches, out);
+    torques = jointTorque_.data();
+  }
+  biasAndOutwardPasses<false>(externalWrenches, torques, out);
 }
 
 void ArticulatedBody::checkTestForce(const TestForce& force) const {
@@ -243,7 +253,7 @@ void ArticulatedBody::respond(std::span<const TestForce> forces, std::span<const
   std::fill(jointTorque_.begin(), jointTorque_.end(), real(0));
   for (std::size_t k = 0; k < forces.size(); ++k)
     depositTestForce(forces[k], magnitudes.empty() ? real(1) : magnitudes[k]);
-  biasAndOutwardPasses({}, out);
+  biasAndOutwardPasses<true>({}, jointTorque_.data(), out);
 }
 
 // --- reading velocities ----------------------------------------------------------------------

@@ -266,18 +266,28 @@ class ArticulatedBody {
   /// Link @p i's step of the inward inertia pass, given its articulated inertia @p da: sets
   /// terms_[i] and returns the inertia it passes to its parent (about the parent's origin).
   SymmetricMatrix3 articulateJoint(std::size_t i, const SymmetricMatrix3& da);
-  /// Link @p i's step of the inward bias pass, given its bias @p pa: sets u_i and returns the
-  /// bias it passes to its parent (about the parent's origin).
-  Vector3 passBias(std::size_t i, const Vector3& pa);
+  /// Link @p i's step of the inward bias pass, given its bias @p pa and its joint torque
+  /// @p tau: sets u_i and returns the bias it passes to its parent (about the parent's origin).
+  Vector3 passBias(std::size_t i, const Vector3& pa, real tau);
   /// The inward sweep, leaves to root: the bias pass from @p externalWrenches (as solve()
-  /// takes them, or empty), the forces already in bias_ and jointTorque_, and the articulated
-  /// inertias too when @p withInertias.
-  template <bool withInertias>
-  void inwardPass(std::span<const Vector3> externalWrenches);
-  /// The bias pass (leaves to root) from @p externalWrenches (or none), the forces in bias_ and
-  /// jointTorque_, with the articulated inertias if they are stale, then the outward pass (root
-  /// to leaves), writing @p out.
-  void biasAndOutwardPasses(std::span<const Vector3> externalWrenches, Output& out);
+  /// takes them, or empty), the joint torques @p torques (one per joint), the forces already in
+  /// bias_, and the articulated inertias too when @p withInertias. With @p depositsAnywhere
+  /// every body's bias_ slot is read (respond()'s test forces); without, only the slots that
+  /// gather the terms of children (gathers_), the others being zero.
+  template <bool withInertias, bool depositsAnywhere>
+  void inwardPass(std::span<const Vector3> externalWrenches, const real* torques);
+  /// Zeroes the slots of @p perBody (bias_ or articulatedInertia_) that gather the terms of
+  /// children (gathers_): the only ones an inward pass without deposits reads.
+  template <class T>
+  void clearGatheringSlots(std::vector<T>& perBody) const {
+    for (const std::size_t slot : gatheringSlots_) perBody[slot] = T{};
+  }
+  /// The bias pass (leaves to root) from @p externalWrenches (or none), the joint torques
+  /// @p torques, the forces in bias_, with the articulated inertias if they are stale, then the
+  /// outward pass (root to leaves), writing @p out.
+  template <bool depositsAnywhere>
+  void biasAndOutwardPasses(std::span<const Vector3> externalWrenches, const real* torques,
+                            Output& out);
 
   real baseMass_;
   real baseInertia_;
@@ -301,6 +311,10 @@ class ArticulatedBody {
 
   // Per link (joint) i.
   std::vector<std::size_t> parentSlot_;  ///< the parent's slot in the per-body arrays
+  /// Per body slot: 1 when some child passes its terms through the slot (a child that is not
+  /// the next link, e.g. at a fork or on the base) rather than in registers; a chain has none.
+  std::vector<std::uint8_t> gathers_;
+  std::vector<std::size_t> gatheringSlots_;  ///< the slots whose gathers_ is 1, in order
   std::vector<Vector2> shift_;  ///< origin minus the parent's origin: X_i is a pure translation
   /// Per joint, the coefficients the inertia pass leaves for the bias and outward passes:
   /// Table 7.1's U_i and d_i folded with X_i (see ArticulatedBody.cpp for the algebra).
@@ -312,7 +326,7 @@ class ArticulatedBody {
   };
   std::vector<JointTerms> terms_;   ///< per joint, from the inertia pass
   std::vector<real> jointDamping_;  ///< c_i, the implicit joint damping
-  std::vector<real> jointTorque_;   ///< tau_i for the current pass
+  std::vector<real> jointTorque_;   ///< tau_i for respond()'s pass (solve() reads its own)
   std::vector<real> jointBias_;     ///< u_i = tau_i - S_i^T p^A_i
 };
 

@@ -57,43 +57,49 @@ inline SymmetricMatrix3 ArticulatedBody::articulateJoint(std::size_t i,
   return passed;
 }
 
-inline Vector3 ArticulatedBody::passBias(std::size_t i, const Vector3& pa) {
+inline Vector3 ArticulatedBody::passBias(std::size_t i, const Vector3& pa, real tau) {
   // Table 7.1, second loop: u_i = tau_i - S_i^T p^A_i, and the parent receives
   // p^a_i = X_i^T (p^A_i + U_i u_i / (d_i + c_i)), written out as in the table above.
   const JointTerms& t = terms_[i];
-  const real ui = jointTorque_[i] - pa.x;
+  const real ui = tau - pa.x;
   jointBias_[i] = ui;
   const Vector2 f = linearPart(pa);
-  return forceVector(t.alpha * pa.x + cross(shift_[i], f) + t.gamma * jointTorque_[i],
-                     f + t.beta * ui);
+  return forceVector(t.alpha * pa.x + cross(shift_[i], f) + t.gamma * tau, f + t.beta * ui);
 }
 
-template <bool withInertias>
-void ArticulatedBody::inwardPass(std::span<const Vector3> externalWrenches) {
+template <bool withInertias, bool depositsAnywhere>
+void ArticulatedBody::inwardPass(std::span<const Vector3> externalWrenches, const real* torques) {
   // Leaves to root: reverse index order visits children before parents. A link's terms go to
   // its parent's slot, except when the parent is the next link visited (slot i: within a
   // limb, the usual case): they are then carried to it in registers. Each link waits for its
   // children, and a round trip through memory would lengthen every link's step. So a body's
   // slot holds only what its other children have passed (and, in bias_, respond()'s test
-  // forces); its own terms are added when it is visited: its inertia about its frame origin
+  // forces), and is read only if it can hold something (gathers_): a chain's links touch no
+  // slot. A body's own terms are added when it is visited: its inertia about its frame origin
   // (ALGORITHMS.md section 2), and p^A_i starts as -f_ext,i about the frame origin (Table 7.1
-  // without the v x* I v term), the wrench being given about the centre of mass.
+  // without the v x* I v term), the wrench being given about the centre of mass: it is
+  // subtracted from the children's terms when the slot is empty, which gives the same bits as
+  // adding its negation.
+  const Vector3* wrenches = externalWrenches.empty() ? nullptr : externalWrenches.data();
   const auto ownBias = [&](std::size_t slot) {
-    return externalWrenches.empty() ? Vector3{}
-                                    : -translateForceBack(externalWrenches[slot], comOffset_[slot]);
+    return wrenches == nullptr ? Vector3{} : -translateForceBack(wrenches[slot], comOffset_[slot]);
   };
-  if constexpr (withInertias)
-    std::fill(articulatedInertia_.begin(), articulatedInertia_.end(), SymmetricMatrix3{});
+  const auto carriedBias = [&](std::size_t slot, const Vector3& carried) {
+    return wrenches == nullptr ? carried
+                               : carried - translateForceBack(wrenches[slot], comOffset_[slot]);
+  };
   SymmetricMatrix3 inertiaCarried;
   Vector3 biasCarried;
   for (std::size_t i = links_.size(); i-- > 0;) {
     const std::size_t self = i + 1;
     const std::size_t parent = parentSlot_[i];
     const bool carry = parent == i;
+    const bool gathers = gathers_[self] != 0;
     if constexpr (withInertias) {
       const ArticulatedLink& link = links_[i];
-      const SymmetricMatrix3 da = spatialInertia(link.mass, link.inertia, comOffset_[self]) +
-                                  articulatedInertia_[self] + inertiaCarried;
+      SymmetricMatrix3 da = spatialInertia(link.mass, link.inertia, comOffset_[self]);
+      if (gathers) da = da + articulatedInertia_[self];
+      da = da + inertiaCarried;
       articulatedInertia_[self] = da;
       const SymmetricMatrix3 passed = articulateJoint(i, da);
       if (carry) {
@@ -103,7 +109,9 @@ void ArticulatedBody::inwardPass(std::span<const Vector3> externalWrenches) {
         inertiaCarried = {};
       }
     }
-    const Vector3 passed = passBias(i, ownBias(self) + bias_[self] + biasCarried);
+    const Vector3 pa = depositsAnywhere || gathers ? ownBias(self) + bias_[self] + biasCarried
+                                                   : carriedBias(self, biasCarried);
+    const Vector3 passed = passBias(i, pa, torques[i]);
     if (carry) {
       biasCarried = passed;
     } else {
@@ -112,31 +120,39 @@ void ArticulatedBody::inwardPass(std::span<const Vector3> externalWrenches) {
     }
   }
   // The first link is always carried (slot 0 is the base): the base gets its last terms here.
-  if constexpr (withInertias)
-    articulatedInertia_[0] = SymmetricMatrix3::diagonal(baseInertia_, baseMass_, baseMass_) +
-                             articulatedInertia_[0] + inertiaCarried;
-  bias_[0] = ownBias(0) + bias_[0] + biasCarried;
+  const bool baseGathers = gathers_[0] != 0;
+  if constexpr (withInertias) {
+    SymmetricMatrix3 da = SymmetricMatrix3::diagonal(baseInertia_, baseMass_, baseMass_);
+    if (baseGathers) da = da + articulatedInertia_[0];
+    articulatedInertia_[0] = da + inertiaCarried;
+  }
+  bias_[0] = depositsAnywhere || baseGathers ? ownBias(0) + bias_[0] + biasCarried
+                                             : carriedBias(0, biasCarried);
 }
 
 void ArticulatedBody::computeArticulatedInertias() {
   // The bias pass comes along (its result is not used): one sweep, and no second copy of it.
-  std::fill(bias_.begin(), bias_.end(), Vector3{});
+  clearGatheringSlots(bias_);
+  clearGatheringSlots(articulatedInertia_);
   std::fill(jointTorque_.begin(), jointTorque_.end(), real(0));
-  inwardPass<true>({});
+  inwardPass<true, false>({}, jointTorque_.data());
   inertiasStale_ = false;
 }
 
 // --- the passes of solve() and respond() ------------------------------------------------------
 
-void ArticulatedBody::biasAndOutwardPasses(std::span<const Vector3> externalWrenches, Output& out) {
+template <bool depositsAnywhere>
+void ArticulatedBody::biasAndOutwardPasses(std::span<const Vector3> externalWrenches,
+                                           const real* torques, Output& out) {
   // Leaves to root. The articulated inertias and the bias forces are both built from the
   // leaves, and link i's bias needs only its own terms: when the configuration has changed,
   // one sweep does both, so the two dependency chains run side by side.
   if (inertiasStale_) {
-    inwardPass<true>(externalWrenches);
+    clearGatheringSlots(articulatedInertia_);
+    inwardPass<true, depositsAnywhere>(externalWrenches, torques);
     inertiasStale_ = false;
   } else {
-    inwardPass<false>(externalWrenches);
+    inwardPass<false, depositsAnywhere>(externalWrenches, torques);
   }
 
   // The free-floating base: nothing acts on it from outside the tree, so 0 = D^A_0 v_0 + p^A_0
@@ -170,5 +186,10 @@ void ArticulatedBody::biasAndOutwardPasses(std::span<const Vector3> externalWren
     out.velocities[self] = translateMotion(v, comOffset_[self]);
   }
 }
+
+template void ArticulatedBody::biasAndOutwardPasses<false>(std::span<const Vector3>, const real*,
+                                                           Output&);
+template void ArticulatedBody::biasAndOutwardPasses<true>(std::span<const Vector3>, const real*,
+                                                          Output&);
 
 }  // namespace thyrix
