@@ -1,5 +1,6 @@
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixPro/ArticulatedBody.h>
+#include <ThyrixPro/CosSin.h>
 #include <ThyrixPro/SpatialAlgebra.h>
 
 #include <algorithm>
@@ -155,40 +156,35 @@ void ArticulatedBody::integrate(const Output& out, real dt) {
 // --- kinematics ------------------------------------------------------------------------------
 
 void ArticulatedBody::forwardKinematics() {
-  // Parents come before children, so one sweep in index order finds every parent's pose ready
-  // (the regular numbering of a kinematic tree, Featherstone 2008, chapter 4). Each body's
-  // axis (cos, sin) is kept, so a link costs one cos and one sin.
-  origin_[0] = basePosition_;
+  // Parents come before children, so sweeps in index order find every parent's pose ready
+  // (the regular numbering of a kinematic tree, Featherstone 2008, chapter 4). Three sweeps:
+  // the angles (a chain of additions), their axes (cos, sin) all at once (cosSin(), a loop
+  // that vectorizes: no call per link), then the origins and centre-of-mass offsets. The
+  // parent's angle and origin are carried in registers when it is the body just visited (slot
+  // i, the usual case within a limb), as in the articulated-body passes: each link waits for
+  // its parent's, and a round trip through memory would lengthen the chain.
   angle_[0] = baseAngle_;
-  axis_[0] = {std::cos(baseAngle_), std::sin(baseAngle_)};
+  real parentAngle = baseAngle_;
+  for (std::size_t i = 0; i < links_.size(); ++i) {
+    const std::size_t p = parentSlot_[i];
+    if (p != i) parentAngle = angle_[p];
+    parentAngle += q_[i];
+    angle_[i + 1] = parentAngle;
+  }
+  cosSin(angle_, axis_);
+  origin_[0] = basePosition_;
   comOffset_[0] = {};
-  // The parent's pose is carried in registers when it is the body just visited (slot i, the
-  // usual case within a limb), as in the articulated-body passes: each link's angle and
-  // origin wait for its parent's, and a round trip through memory would lengthen the chain.
   Vector2 parentOrigin = origin_[0];
-  real parentAngle = angle_[0];
-  Vector2 parentAxis = axis_[0];
   for (std::size_t i = 0; i < links_.size(); ++i) {
     const ArticulatedLink& l = links_[i];
     const std::size_t p = parentSlot_[i];
     const std::size_t self = i + 1;
-    if (p != i) {
-      parentOrigin = origin_[p];
-      parentAngle = angle_[p];
-      parentAxis = axis_[p];
-    }
-    const Vector2 shift = rotate(parentAxis, l.jointPosition);
+    if (p != i) parentOrigin = origin_[p];
+    const Vector2 shift = rotate(axis_[p], l.jointPosition);
     shift_[i] = shift;
-    const Vector2 origin = parentOrigin + shift;
-    origin_[self] = origin;
-    const real a = parentAngle + q_[i];
-    angle_[self] = a;
-    const Vector2 axis{std::cos(a), std::sin(a)};
-    axis_[self] = axis;
-    comOffset_[self] = rotate(axis, l.centerOfMass);
-    parentOrigin = origin;
-    parentAngle = a;
-    parentAxis = axis;
+    parentOrigin += shift;
+    origin_[self] = parentOrigin;
+    comOffset_[self] = rotate(axis_[self], l.centerOfMass);
   }
   // Everything that depends on the configuration is now out of date.
   inertiasStale_ = true;

@@ -1,0 +1,92 @@
+#pragma once
+/// @file CosSin.h
+/// @brief The unit vector `(cos a, sin a)` of an angle, inline and without a library call, for
+/// the forward kinematics' loop over links.
+
+#include <ThyrixLite/ThyrixParameters.h>
+#include <ThyrixLite/Vector2.h>
+
+#include <bit>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+namespace thyrix {
+
+namespace detail {
+
+/// The kernel of cosSin() for `|a| < 2^19`, branch-free (the quadrant's swap and signs are bit
+/// operations), so that a loop over many angles vectorizes.
+inline Vector2 cosSinReduced(real a) {
+  const double x = static_cast<double>(a);
+  // Round to the nearest integer by adding 1.5 * 2^52: the sum's last bits are k (two's
+  // complement), and subtracting the constant again gives k as a double, exactly.
+  constexpr double roundingShift = 0x1.8p52;
+  const double shifted = x * 0x1.45f306dc9c883p-1 + roundingShift;  // a 2/pi + 1.5 2^52
+  const double k = shifted - roundingShift;
+  const std::uint64_t quadrant = std::bit_cast<std::uint64_t>(shifted) & 3u;
+  // pi/2 = C1 + C2 + C3, C1 and C2 of 32 significant bits (k C1 and k C2 exact for |k| < 2^21).
+  const double r = ((x - k * 0x1.921fb544p+0) - k * 0x1.0b4611a6p-34) - k * 0x1.3198a2e037073p-69;
+  const double r2 = r * r;
+  // Taylor coefficients (-1)^n / (2n)! and (-1)^n / (2n + 1)!, rounded once at compile time.
+  constexpr double c2 = -1.0 / 2, c4 = 1.0 / 24, c6 = -1.0 / 720, c8 = 1.0 / 40320,
+                   c10 = -1.0 / 3628800, c12 = 1.0 / 479001600, c14 = -1.0 / 87178291200.0,
+                   c16 = 1.0 / 20922789888000.0;
+  constexpr double s3 = -1.0 / 6, s5 = 1.0 / 120, s7 = -1.0 / 5040, s9 = 1.0 / 362880,
+                   s11 = -1.0 / 39916800, s13 = 1.0 / 6227020800.0, s15 = -1.0 / 1307674368000.0,
+                   s17 = 1.0 / 355687428096000.0;
+  const double cosR =
+      1 +
+      r2 * (c2 +
+            r2 * (c4 + r2 * (c6 + r2 * (c8 + r2 * (c10 + r2 * (c12 + r2 * (c14 + r2 * c16)))))));
+  const double sinR =
+      r + r * r2 *
+              (s3 +
+               r2 * (s5 + r2 * (s7 + r2 * (s9 + r2 * (s11 + r2 * (s13 + r2 * (s15 + r2 * s17)))))));
+  // Quadrant q: (cos, sin)(r + q pi/2) = (cos r, sin r), (-sin r, cos r), (-cos r, -sin r),
+  // (sin r, -cos r): swapped for odd q, cos negated for q = 1, 2, sin for q = 2, 3.
+  const std::uint64_t cosBits = std::bit_cast<std::uint64_t>(cosR);
+  const std::uint64_t sinBits = std::bit_cast<std::uint64_t>(sinR);
+  const std::uint64_t swap = 0 - (quadrant & 1u);  // all ones for odd q
+  const std::uint64_t c = (sinBits & swap) | (cosBits & ~swap);
+  const std::uint64_t s = (cosBits & swap) | (sinBits & ~swap);
+  return {static_cast<real>(std::bit_cast<double>(c ^ (((quadrant + 1) & 2u) << 62))),
+          static_cast<real>(std::bit_cast<double>(s ^ ((quadrant & 2u) << 62)))};
+}
+
+/// Whether cosSinReduced() takes @p a: `|a| < 2^19` (false for NaN).
+inline bool cosSinReduces(real a) { return std::abs(static_cast<double>(a)) < 0x1p19; }
+
+}  // namespace detail
+
+/// `(cos a, sin a)` for the angle @p a (rad): within one unit in the last place of `std::cos`
+/// and `std::sin` for `|a| <= 100`, two up to 2^19, the library's own values beyond
+/// (tests/SpatialAlgebraTest.cpp checks it); about one value in six differs from the library's
+/// by an ulp.
+///
+/// Why not `std::cos` and `std::sin`: the forward kinematics needs one pair per link in every
+/// step; a library call costs as much as the rest of the link's kinematics, and calls one by
+/// one do not vectorize.
+///
+/// How: `a = k pi/2 + r` with `|r| <= pi/4` (k the nearest integer to `a 2/pi`, r by
+/// Cody-Waite reduction: pi/2 split in three parts whose products by k are exact or
+/// negligible), then the Taylor series of cos and sin in r (to r^16 and r^17: the first term
+/// left out is below 1e-19), and the quadrant `k mod 4` swaps and negates them. Angles of
+/// magnitude 2^19 or more (or not finite) go to the library, whose reduction is exact.
+inline Vector2 cosSin(real a) {
+  if (!detail::cosSinReduces(a)) [[unlikely]]
+    return {std::cos(a), std::sin(a)};  // also NaN for an angle that is not finite
+  return detail::cosSinReduced(a);
+}
+
+/// cosSin() of every angle of @p angles into @p out (the same size): one loop that vectorizes
+/// (the kernel alone), then one that redoes the angles out of its range.
+inline void cosSin(std::span<const real> angles, std::span<Vector2> out) {
+  for (std::size_t k = 0; k < angles.size(); ++k) out[k] = detail::cosSinReduced(angles[k]);
+  for (std::size_t k = 0; k < angles.size(); ++k)
+    if (!detail::cosSinReduces(angles[k])) [[unlikely]]
+      out[k] = cosSin(angles[k]);
+}
+
+}  // namespace thyrix
