@@ -150,11 +150,13 @@ ArticulatedAgentBase::ArticulatedAgentBase(const std::vector<ArticulatedBasePart
     baseParts_.push_back(std::move(shape));
   }
   linkShapes_.reserve(n);
+  linkHalfLengths_.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     auto shape = std::make_unique<ArticulatedComponent<CappedRectangle>>(
         static_cast<int>(i), layout.links[i].length / 2, layout.radii[i], layout.links[i].mass);
     shape->attachTo(*this, {}, 0, /*rigid=*/false);
     addPrimitive(*shape);
+    linkHalfLengths_.push_back(shape->halfLength());
     linkShapes_.push_back(std::move(shape));
   }
 
@@ -192,8 +194,8 @@ void ArticulatedAgentBase::placeShapes() {
   // compute them again for the capsule's end points (Primitive::direction()).
   for (std::size_t i = 0; i < linkShapes_.size(); ++i) {
     const int link = static_cast<int>(i);
-    CappedRectangle& shape = *linkShapes_[i];
-    shape.place(body_.toWorld(link, {shape.halfLength(), 0}), body_.angle(link), body_.axis(link));
+    linkShapes_[i]->place(body_.toWorld(link, {linkHalfLengths_[i], 0}), body_.angle(link),
+                          body_.axis(link));
   }
   r = body_.basePosition();
   alpha = baseAngle;

@@ -280,6 +280,9 @@ class ArticulatedAgentBase : public MultiBodyObject {
   std::vector<Vector2> partPositions_;  ///< each base part's centre relative to the centre of mass
   std::vector<real> partAngles_;        ///< each base part's angle in the base frame
   std::vector<std::unique_ptr<ArticulatedComponent<CappedRectangle>>> linkShapes_;
+  /// Each link capsule's half length (fixed), kept here so that placeShapes() only writes to
+  /// the shapes, which lie apart in memory, and reads nothing from them.
+  std::vector<real> linkHalfLengths_;
   Vector2 centreOffset_;
   const Simulator* simulator_ = nullptr;
 };
