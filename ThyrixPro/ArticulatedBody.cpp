@@ -127,6 +127,8 @@ void ArticulatedBody::setJointDamping(int i, real damping) {
                           "must be finite and non-negative (got " + std::to_string(damping) + ")");
   real& c = jointDamping_[static_cast<std::size_t>(i)];
   if (c == damping) return;
+  if (c == 0) ++dampedJoints_;
+  if (damping == 0) --dampedJoints_;
   c = damping;
   inertiasStale_ = true;  // d_i + c_i enters D^A of every ancestor
 }

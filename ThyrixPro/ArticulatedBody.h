@@ -255,7 +255,8 @@ class ArticulatedBody {
   [[nodiscard]] Output makeOutput() const { return Output(linkCount()); }
 
   /// The cached articulated inertia `D^A` of body @p b (-1 the base) about its frame origin,
-  /// world axes, ordered (angular, x, y); valid after computeArticulatedInertias().
+  /// world axes, ordered (angular, x, y); valid after computeArticulatedInertias() (solve()
+  /// keeps only the base's).
   [[nodiscard]] const SymmetricMatrix3& articulatedInertia(int b) const {
     return articulatedInertia_[b + 1];
   }
@@ -265,16 +266,19 @@ class ArticulatedBody {
   void depositTestForce(const TestForce& force, real magnitude);
   /// Link @p i's step of the inward inertia pass, given its articulated inertia @p da: sets
   /// terms_[i] and returns the inertia it passes to its parent (about the parent's origin).
+  template <bool damped>
   SymmetricMatrix3 articulateJoint(std::size_t i, const SymmetricMatrix3& da);
   /// Link @p i's step of the inward bias pass, given its bias @p pa and its joint torque
   /// @p tau: sets u_i and returns the bias it passes to its parent (about the parent's origin).
   Vector3 passBias(std::size_t i, const Vector3& pa, real tau);
   /// The inward sweep, leaves to root: the bias pass from @p externalWrenches (as solve()
   /// takes them, or empty), the joint torques @p torques (one per joint), the forces already in
-  /// bias_, and the articulated inertias too when @p withInertias. With @p depositsAnywhere
-  /// every body's bias_ slot is read (respond()'s test forces); without, only the slots that
-  /// gather the terms of children (gathers_), the others being zero.
-  template <bool withInertias, bool depositsAnywhere>
+  /// bias_, and the articulated inertias too when @p withInertias, with the joint damping when
+  /// @p damped (else all c_i are zero). When @p general every body's bias_ slot is read
+  /// (respond()'s test forces) and every articulated inertia stored; otherwise only the slots
+  /// that gather the terms of children (gathers_) are read, the others being zero, and only the
+  /// base's inertia is kept.
+  template <bool withInertias, bool damped, bool general>
   void inwardPass(std::span<const Vector3> externalWrenches, const real* torques);
   /// Zeroes the slots of @p perBody (bias_ or articulatedInertia_) that gather the terms of
   /// children (gathers_): the only ones an inward pass without deposits reads.
@@ -283,9 +287,10 @@ class ArticulatedBody {
     for (const std::size_t slot : gatheringSlots_) perBody[slot] = T{};
   }
   /// The bias pass (leaves to root) from @p externalWrenches (or none), the joint torques
-  /// @p torques, the forces in bias_, with the articulated inertias if they are stale, then the
-  /// outward pass (root to leaves), writing @p out.
-  template <bool depositsAnywhere>
+  /// @p torques, the forces in bias_ (in every slot when @p general, see inwardPass()), with
+  /// the articulated inertias if they are stale, then the outward pass (root to leaves),
+  /// writing @p out.
+  template <bool general>
   void biasAndOutwardPasses(std::span<const Vector3> externalWrenches, const real* torques,
                             Output& out);
 
@@ -307,7 +312,8 @@ class ArticulatedBody {
   std::vector<Vector2> comOffset_;  ///< centre of mass minus frame origin
   std::vector<SymmetricMatrix3> articulatedInertia_;  ///< D^A about the frame origin
   std::vector<Vector3> bias_;                         ///< p^A about the frame origin
-  std::vector<Vector3> originVelocity_;               ///< spatial velocity at the frame origin
+  /// The spatial velocity at the frame origin, kept for the bodies whose slot gathers (gathers_)
+  std::vector<Vector3> originVelocity_;
 
   // Per link (joint) i.
   std::vector<std::size_t> parentSlot_;  ///< the parent's slot in the per-body arrays
@@ -326,6 +332,7 @@ class ArticulatedBody {
   };
   std::vector<JointTerms> terms_;   ///< per joint, from the inertia pass
   std::vector<real> jointDamping_;  ///< c_i, the implicit joint damping
+  std::size_t dampedJoints_ = 0;    ///< how many c_i are not zero
   std::vector<real> jointTorque_;   ///< tau_i for respond()'s pass (solve() reads its own)
   std::vector<real> jointBias_;     ///< u_i = tau_i - S_i^T p^A_i
 };

@@ -29,6 +29,7 @@ namespace thyrix {
 // inertia pass computes them once, and each bias and outward pass, which are chains of
 // dependent operations from link to link, does only a few multiply-adds per link.
 
+template <bool damped>
 inline SymmetricMatrix3 ArticulatedBody::articulateJoint(std::size_t i,
                                                          const SymmetricMatrix3& da) {
   // Featherstone 2008, section 7.3 and Table 7.1: U_i = I^A_i S_i, d_i = S_i^T U_i, and the
@@ -37,18 +38,30 @@ inline SymmetricMatrix3 ArticulatedBody::articulateJoint(std::size_t i,
   // (d_i + c_i) qdot_i = u_i - U_i^T v'_i and d_i + c_i replaces d_i in both places; the first
   // row of the bracket is then U_i^T c_i / (d_i + c_i), zero for an undamped joint. S = (1, 0,
   // 0) picks the first column of D^A_i. Written out as in the table above.
-  const real c = jointDamping_[i];
+  //
+  // Without damping (c = 0, every joint of the body: `damped` false) the additions of c are
+  // left out: adding zero changes no bit (but a zero's sign), and the division waits for one
+  // addition less.
   const Vector2 r = shift_[i];
   const Vector2 h{-r.y, r.x};
   const Vector2 b{da.xy, da.xz};
-  const real inverseD = 1 / (da.xx + c);
   const real g = cross(r, b);
-  const real k = c - g;
-  const Vector2 beta = b * inverseD;
-  terms_[i] = {inverseD, k * inverseD, (da.xx + g) * inverseD, beta};
   const Vector2 ah{da.yy * h.x + da.yz * h.y, da.yz * h.x + da.zz * h.y};  // A h
   SymmetricMatrix3 passed;
-  passed.xx = h.dot(ah) + c - k * k * inverseD;
+  real inverseD;
+  real k;
+  if constexpr (damped) {
+    const real c = jointDamping_[i];
+    inverseD = 1 / (da.xx + c);
+    k = c - g;
+    passed.xx = h.dot(ah) + c - k * k * inverseD;
+  } else {
+    inverseD = 1 / da.xx;
+    k = -g;
+    passed.xx = h.dot(ah) - k * k * inverseD;
+  }
+  const Vector2 beta = b * inverseD;
+  terms_[i] = {inverseD, k * inverseD, (da.xx + g) * inverseD, beta};
   passed.xy = ah.x + beta.x * k;
   passed.xz = ah.y + beta.y * k;
   passed.yy = da.yy - beta.x * b.x;
@@ -67,7 +80,7 @@ inline Vector3 ArticulatedBody::passBias(std::size_t i, const Vector3& pa, real 
   return forceVector(t.alpha * pa.x + cross(shift_[i], f) + t.gamma * tau, f + t.beta * ui);
 }
 
-template <bool withInertias, bool depositsAnywhere>
+template <bool withInertias, bool damped, bool general>
 void ArticulatedBody::inwardPass(std::span<const Vector3> externalWrenches, const real* torques) {
   // Leaves to root: reverse index order visits children before parents. A link's terms go to
   // its parent's slot, except when the parent is the next link visited (slot i: within a
@@ -79,7 +92,8 @@ void ArticulatedBody::inwardPass(std::span<const Vector3> externalWrenches, cons
   // (ALGORITHMS.md section 2), and p^A_i starts as -f_ext,i about the frame origin (Table 7.1
   // without the v x* I v term), the wrench being given about the centre of mass: it is
   // subtracted from the children's terms when the slot is empty, which gives the same bits as
-  // adding its negation.
+  // adding its negation. Only the base's articulated inertia is needed afterwards: the links'
+  // are stored when `general` (for articulatedInertia()).
   const Vector3* wrenches = externalWrenches.empty() ? nullptr : externalWrenches.data();
   const auto ownBias = [&](std::size_t slot) {
     return wrenches == nullptr ? Vector3{} : -translateForceBack(wrenches[slot], comOffset_[slot]);
@@ -100,8 +114,8 @@ void ArticulatedBody::inwardPass(std::span<const Vector3> externalWrenches, cons
       SymmetricMatrix3 da = spatialInertia(link.mass, link.inertia, comOffset_[self]);
       if (gathers) da = da + articulatedInertia_[self];
       da = da + inertiaCarried;
-      articulatedInertia_[self] = da;
-      const SymmetricMatrix3 passed = articulateJoint(i, da);
+      if constexpr (general) articulatedInertia_[self] = da;
+      const SymmetricMatrix3 passed = articulateJoint<damped>(i, da);
       if (carry) {
         inertiaCarried = passed;
       } else {
@@ -109,8 +123,8 @@ void ArticulatedBody::inwardPass(std::span<const Vector3> externalWrenches, cons
         inertiaCarried = {};
       }
     }
-    const Vector3 pa = depositsAnywhere || gathers ? ownBias(self) + bias_[self] + biasCarried
-                                                   : carriedBias(self, biasCarried);
+    const Vector3 pa = general || gathers ? ownBias(self) + bias_[self] + biasCarried
+                                          : carriedBias(self, biasCarried);
     const Vector3 passed = passBias(i, pa, torques[i]);
     if (carry) {
       biasCarried = passed;
@@ -126,22 +140,25 @@ void ArticulatedBody::inwardPass(std::span<const Vector3> externalWrenches, cons
     if (baseGathers) da = da + articulatedInertia_[0];
     articulatedInertia_[0] = da + inertiaCarried;
   }
-  bias_[0] = depositsAnywhere || baseGathers ? ownBias(0) + bias_[0] + biasCarried
-                                             : carriedBias(0, biasCarried);
+  bias_[0] =
+      general || baseGathers ? ownBias(0) + bias_[0] + biasCarried : carriedBias(0, biasCarried);
 }
 
 void ArticulatedBody::computeArticulatedInertias() {
   // The bias pass comes along (its result is not used): one sweep, and no second copy of it.
-  clearGatheringSlots(bias_);
+  std::fill(bias_.begin(), bias_.end(), Vector3{});
   clearGatheringSlots(articulatedInertia_);
   std::fill(jointTorque_.begin(), jointTorque_.end(), real(0));
-  inwardPass<true, false>({}, jointTorque_.data());
+  if (dampedJoints_ > 0)
+    inwardPass<true, true, true>({}, jointTorque_.data());
+  else
+    inwardPass<true, false, true>({}, jointTorque_.data());
   inertiasStale_ = false;
 }
 
 // --- the passes of solve() and respond() ------------------------------------------------------
 
-template <bool depositsAnywhere>
+template <bool general>
 void ArticulatedBody::biasAndOutwardPasses(std::span<const Vector3> externalWrenches,
                                            const real* torques, Output& out) {
   // Leaves to root. The articulated inertias and the bias forces are both built from the
@@ -149,10 +166,13 @@ void ArticulatedBody::biasAndOutwardPasses(std::span<const Vector3> externalWren
   // one sweep does both, so the two dependency chains run side by side.
   if (inertiasStale_) {
     clearGatheringSlots(articulatedInertia_);
-    inwardPass<true, depositsAnywhere>(externalWrenches, torques);
+    if (dampedJoints_ > 0)
+      inwardPass<true, true, general>(externalWrenches, torques);
+    else
+      inwardPass<true, false, general>(externalWrenches, torques);
     inertiasStale_ = false;
   } else {
-    inwardPass<false, depositsAnywhere>(externalWrenches, torques);
+    inwardPass<false, false, general>(externalWrenches, torques);
   }
 
   // The free-floating base: nothing acts on it from outside the tree, so 0 = D^A_0 v_0 + p^A_0
@@ -179,7 +199,7 @@ void ArticulatedBody::biasAndOutwardPasses(std::span<const Vector3> externalWren
         jointBias_[i] * t.inverseD - t.gamma * angularPart(vp) - t.beta.dot(linearPart(vp));
     Vector3 v = translateMotion(vp, shift_[i]);
     v.x += qdot;
-    originVelocity_[self] = v;
+    if (gathers_[self] != 0) originVelocity_[self] = v;  // read by a child not carried
     previous = v;
     out.jointRates[i] = qdot;
     // The centre of mass moves with the body point there: v_O + omega x c.
