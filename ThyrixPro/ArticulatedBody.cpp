@@ -167,13 +167,18 @@ void ArticulatedBody::forwardKinematics() {
   // its parent's, and a round trip through memory would lengthen the chain.
   angle_[0] = baseAngle_;
   real parentAngle = baseAngle_;
+  bool kernelTakesAll = cosSinKernelTakes(baseAngle_);
   for (std::size_t i = 0; i < links_.size(); ++i) {
     const std::size_t p = parentSlot_[i];
     if (p != i) parentAngle = angle_[p];
     parentAngle += q_[i];
     angle_[i + 1] = parentAngle;
+    kernelTakesAll &= cosSinKernelTakes(parentAngle);
   }
-  cosSin(angle_, axis_);
+  if (kernelTakesAll)
+    cosSinKernel(angle_, axis_);
+  else
+    cosSin(angle_, axis_);
   origin_[0] = basePosition_;
   comOffset_[0] = {};
   Vector2 parentOrigin = origin_[0];

@@ -55,10 +55,10 @@ inline Vector2 cosSinReduced(real a) {
           static_cast<real>(std::bit_cast<double>(s ^ ((quadrant & 2u) << 62)))};
 }
 
-/// Whether cosSinReduced() takes @p a: `|a| < 2^19` (false for NaN).
-inline bool cosSinReduces(real a) { return std::abs(static_cast<double>(a)) < 0x1p19; }
-
 }  // namespace detail
+
+/// Whether cosSinKernel() takes the angle @p a: `|a| < 2^19` (false for NaN).
+inline bool cosSinKernelTakes(real a) { return std::abs(static_cast<double>(a)) < 0x1p19; }
 
 /// `(cos a, sin a)` for the angle @p a (rad): within one unit in the last place of `std::cos`
 /// and `std::sin` for `|a| <= 100`, two up to 2^19, the library's own values beyond
@@ -75,17 +75,24 @@ inline bool cosSinReduces(real a) { return std::abs(static_cast<double>(a)) < 0x
 /// left out is below 1e-19), and the quadrant `k mod 4` swaps and negates them. Angles of
 /// magnitude 2^19 or more (or not finite) go to the library, whose reduction is exact.
 inline Vector2 cosSin(real a) {
-  if (!detail::cosSinReduces(a)) [[unlikely]]
+  if (!cosSinKernelTakes(a)) [[unlikely]]
     return {std::cos(a), std::sin(a)};  // also NaN for an angle that is not finite
   return detail::cosSinReduced(a);
 }
 
-/// cosSin() of every angle of @p angles into @p out (the same size): one loop that vectorizes
-/// (the kernel alone), then one that redoes the angles out of its range.
-inline void cosSin(std::span<const real> angles, std::span<Vector2> out) {
+/// cosSin() of every angle of @p angles into @p out (the same size), each of which
+/// cosSinKernelTakes(): one loop that vectorizes. (A caller that computes the angles in a loop
+/// of its own checks them there, for free.)
+inline void cosSinKernel(std::span<const real> angles, std::span<Vector2> out) {
   for (std::size_t k = 0; k < angles.size(); ++k) out[k] = detail::cosSinReduced(angles[k]);
+}
+
+/// cosSin() of every angle of @p angles into @p out (the same size): cosSinKernel(), then
+/// cosSin() again for the angles out of its range.
+inline void cosSin(std::span<const real> angles, std::span<Vector2> out) {
+  cosSinKernel(angles, out);
   for (std::size_t k = 0; k < angles.size(); ++k)
-    if (!detail::cosSinReduces(angles[k])) [[unlikely]]
+    if (!cosSinKernelTakes(angles[k])) [[unlikely]]
       out[k] = cosSin(angles[k]);
 }
 
