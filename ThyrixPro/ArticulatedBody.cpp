@@ -83,6 +83,9 @@ ArticulatedBody::ArticulatedBody(real baseMass, real baseInertia,
     if (parentSlot_[i] != i) gathers_[parentSlot_[i]] = 1;
   for (std::size_t slot = 0; slot <= n; ++slot)
     if (gathers_[slot] != 0) gatheringSlots_.push_back(slot);
+  inChain_.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    inChain_[i] = parentSlot_[i] == i && gathers_[i + 1] == 0 ? 1 : 0;
   q_.assign(n, 0);
   origin_.assign(n + 1, Vector2{});
   angle_.assign(n + 1, 0);

@@ -106,6 +106,18 @@ void ArticulatedBody::inwardPass(std::span<const Vector3> externalWrenches, cons
   Vector3 biasCarried;
   for (std::size_t i = links_.size(); i-- > 0;) {
     const std::size_t self = i + 1;
+    if (!general && inChain_[i] != 0) {
+      // Within a chain (the parent is the next link visited, no other child): the terms come
+      // in registers and go out in registers, with no slot to look at.
+      if constexpr (withInertias) {
+        const ArticulatedLink& link = links_[i];
+        const SymmetricMatrix3 da =
+            spatialInertia(link.mass, link.inertia, comOffset_[self]) + inertiaCarried;
+        inertiaCarried = articulateJoint<damped>(i, da);
+      }
+      biasCarried = passBias(i, carriedBias(self, biasCarried), torques[i]);
+      continue;
+    }
     const std::size_t parent = parentSlot_[i];
     const bool carry = parent == i;
     const bool gathers = gathers_[self] != 0;
