@@ -77,7 +77,7 @@ struct ContactConstraint {
   real armA = 0;        ///< (p - c_a) x n
   real armB = 0;        ///< (p - c_b) x n
   real target = 0;      ///< c: the least allowed normal velocity
-  real force = 0;       ///< f: the normal force, the unknown
+  real force = 0;       ///< f: the normal force, the unknown (Gauss-Seidel starts from it)
 
   /// The normal relative velocity `w = J u` for the current body velocities.
   [[nodiscard]] real normalVelocity(const SolverBody& bodyA, const SolverBody& bodyB) const {

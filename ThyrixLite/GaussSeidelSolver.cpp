@@ -122,7 +122,8 @@ void GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
     const real inverseScaled = response > 0 ? relaxation / response : 0;
     const std::uint32_t a = localIndex(c.a, bodyA);
     const std::uint32_t b = localIndex(c.b, bodyB);
-    // The starting force's velocities, added here in island order (no pass of its own).
+    // The starting force's velocities, added here in island order (no pass of its own), by
+    // ContactConstraint::applyImpulse's formula written for the local bodies (same bits).
     const real force = c.force;
     local[a].v -= c.normal * (force * bodyA.inverseMass);
     local[a].omega -= c.armA * force * bodyA.inverseInertia;
@@ -169,14 +170,14 @@ GaussSeidelSolver::SweepResult GaussSeidelSolver::sweep() {
     Body& bodyB = bodies_[row.b];
     const real force = forces_[p];
     const real start = force + row.scaledTarget;
-    // The normal velocity already scaled by relaxation / A_kk.
-    real velocity = dot(row.scaledNormal, bodyB.v - bodyA.v);
+    // The normal velocity w times relaxation / A_kk, a force.
+    real scaledVelocity = dot(row.scaledNormal, bodyB.v - bodyA.v);
     if constexpr (turning)
-      velocity += turning_[p].scaledArmB * bodyB.omega - turning_[p].scaledArmA * bodyA.omega;
-    // The new force max(0, start - velocity) is start - min(start, velocity): the accumulated
-    // force is clamped, not the increment. No test for a zero change: the branch would be
-    // unpredictable, and adding zero is cheaper than a mispredicted jump.
-    const real reached = std::min(start, velocity);
+      scaledVelocity += turning_[p].scaledArmB * bodyB.omega - turning_[p].scaledArmA * bodyA.omega;
+    // The new force max(0, start - scaledVelocity) is start - min(start, scaledVelocity): the
+    // accumulated force is clamped, not the increment. No test for a zero change: the branch
+    // would be unpredictable, and adding zero is cheaper than a mispredicted jump.
+    const real reached = std::min(start, scaledVelocity);
     const real newForce = start - reached;
     const real change = newForce - force;  // exact when close to the force (Sterbenz)
     // In double the velocities follow scaledTarget - reached, the same change but for

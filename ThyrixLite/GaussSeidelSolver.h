@@ -26,9 +26,9 @@ namespace thyrix {
 /// through a long chain of contacts (a pile's weight down to its floor) then converges in a few
 /// tens of sweeps instead of hundreds.
 ///
-/// The solver copies an island into contiguous local arrays (rows with their inverse diagonal,
-/// bodies in order of first use) before sweeping, so a sweep streams through memory; the
-/// buffers are kept between calls (no allocation once they reached the largest island).
+/// The solver copies an island into contiguous local arrays (rows with what a sweep needs
+/// precomputed, bodies in order of first use) before sweeping, so a sweep streams through memory;
+/// the buffers are kept between calls (no allocation once they reached the largest island).
 class GaussSeidelSolver {
  public:
   /// Solves the rows listed in @p island (forces into the rows, velocities into @p bodies).
@@ -60,10 +60,11 @@ class GaussSeidelSolver {
   /// The turning part of a row, kept apart: islands where no contact has a lever arm (circles
   /// and borders) never read it.
   struct Turning {
-    real scaledArmA;  // relaxation / A_kk times the arms of w = n . (vB - vA) + armB omegaB -
-    real scaledArmB;  // armA omegaA
-    real turnA;       // change of omegaA per unit force: -armA / IA
-    real turnB;       // of omegaB: armB / IB
+    // w = n . (vB - vA) + armB omegaB - armA omegaA: its arms times relaxation / A_kk.
+    real scaledArmA;
+    real scaledArmB;
+    real turnA;  // change of omegaA per unit force: -armA / IA
+    real turnB;  // of omegaB: armB / IB
   };
   /// A body's velocity in the island's local numbering.
   struct Body {

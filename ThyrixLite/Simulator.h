@@ -55,7 +55,9 @@ class Simulator : public World {
   /// Phase 1: erases the last step's contacts (kept until now so a GUI can draw them).
   void eraseContacts();
   /// Phase 2: updates bounding boxes, finds the contacts (broad then narrow phase).
-  /// Appends to `contacts`: call eraseContacts() first when running phases by hand.
+  /// Appends to `contacts`: call eraseContacts() first when running phases by hand. (Only a
+  /// step with one detection into an empty list, then a solve, leaves its contacts for the
+  /// next step's rest skipping and warm start.)
   void detectContacts();
   /// Phase 3: lists each contact in its two objects' `contacts`.
   void indexContacts();
@@ -152,8 +154,9 @@ class Simulator : public World {
     bool standalone = false;    // the body is its one primitive
     bool restsCheaply = false;  // standalone, or no shape: at rest, only its sensors to note
   };
-  /// The pose of a primitive its geometry was computed from, its capsule half axis, and its
-  /// half length (fixed at construction: copied here so a moved shape reads one record).
+  /// The pose of a primitive its geometry was computed from (not kept for a standalone
+  /// circle, whose body's pose says it), its capsule half axis, and its half length (fixed at
+  /// construction: copied here so a moved shape reads one record).
   struct ShapePose {
     Vector2 r;
     real alpha = 0;

@@ -56,7 +56,8 @@ void Simulator::detectContacts() {
     const Shape& sa = shapes_[a];
     const Shape& sb = shapes_[b];
     if (sa.body == sb.body) {
-      // (reuseContacts would test such a pair again too.)
+      // Tested whether or not the shapes moved (reuseContacts too sends such a pair to
+      // addContacts: whether it collides is its object's call).
       if (ownShapesMayTouch(multiBodies_[sa.body], bodyStates_[sa.body].firstShape, a, b)) {
         flush();
         addContacts(a, b);
