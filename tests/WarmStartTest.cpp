@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <vector>
 
 namespace thyrix {
 namespace {
@@ -19,24 +20,42 @@ constexpr int columnHeight = 10;
 // A speed the solver is converged to (its tolerance is 1e-7 m/s in double, 1e-5 in float).
 constexpr real tolerance = test::isFloat ? real(1e-4) : real(1e-5);
 
-/// A column of unit disks on the floor, pushed down from the top by 1 N each step, solved by
-/// Gauss-Seidel. Optionally a loose disk beside
-/// the column, a speculative contact (no force) away from its third disk. Returns the top disk.
-PhysicalObject& buildColumn(Simulator& simulator, bool warmStart, PhysicalObject** loose) {
-  simulator.setContactSolver(ContactSolverKind::GaussSeidel);
-  ContactSolverSettings& settings = simulator.solverSettings();
-  settings.warmStart = warmStart;
-  simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
+/// A column of unit disks on the floor, solved by Gauss-Seidel, and optionally a loose disk
+/// beside it: a speculative contact (no force) with the column's third disk.
+struct Column {
   PhysicalObject* top = nullptr;
+  PhysicalObject* loose = nullptr;
+};
+
+Column buildColumn(Simulator& simulator, bool warmStart, bool withLooseDisk) {
+  simulator.setContactSolver(ContactSolverKind::GaussSeidel);
+  simulator.solverSettings().warmStart = warmStart;
+  simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
+  Column column;
   for (int i = 0; i < columnHeight; ++i) {
-    top = &simulator.registerObject(std::make_unique<Circle>(real(0.5), real(1)));
-    top->r = {0, real(0.5) + static_cast<real>(i)};
+    column.top = &simulator.registerObject(std::make_unique<Circle>(real(0.5), real(1)));
+    column.top->r = {0, real(0.5) + static_cast<real>(i)};
   }
-  if (loose != nullptr) {
-    *loose = &simulator.registerObject(std::make_unique<Circle>(real(0.5), real(1)));
-    (*loose)->r = {real(1.01), real(2.5)};
+  if (withLooseDisk) {
+    column.loose = &simulator.registerObject(std::make_unique<Circle>(real(0.5), real(1)));
+    column.loose->r = {real(1.01), real(2.5)};
   }
-  return *top;
+  return column;
+}
+
+/// A contact's identity, as the warm start matches it.
+struct Identity {
+  std::uint32_t shapeA;
+  std::uint32_t shapeB;
+  std::uint32_t feature;
+  bool operator==(const Identity&) const = default;
+};
+
+std::vector<Identity> identities(const Simulator& simulator) {
+  std::vector<Identity> result;
+  for (const GlobalContactInfo& c : simulator.contacts)
+    result.push_back({c.shapeA, c.shapeB, c.feature});
+  return result;
 }
 
 /// Steps @p simulator with the top disk pushed down, with at most @p sweeps sweeps.
@@ -58,9 +77,9 @@ real largestSpeed(const Simulator& simulator) {
 // forces two sweeps leave the top disks moving.
 TEST(WarmStart, TheLastStepsForcesSolveASteadyColumnInTwoSweeps) {
   Simulator warm;
-  PhysicalObject& warmTop = buildColumn(warm, true, nullptr);
+  PhysicalObject& warmTop = *buildColumn(warm, true, false).top;
   Simulator cold;
-  PhysicalObject& coldTop = buildColumn(cold, false, nullptr);
+  PhysicalObject& coldTop = *buildColumn(cold, false, false).top;
   pushedStep(warm, warmTop, 1000);
   pushedStep(cold, coldTop, 1000);
   EXPECT_LT(largestSpeed(warm), tolerance);
@@ -76,14 +95,18 @@ TEST(WarmStart, TheLastStepsForcesSolveASteadyColumnInTwoSweeps) {
 
 TEST(WarmStart, ContactsOutOfLastStepsOrderAreFoundToo) {
   Simulator simulator;
-  PhysicalObject* loose = nullptr;
-  PhysicalObject& top = buildColumn(simulator, true, &loose);
-  pushedStep(simulator, top, 1000);
+  const Column column = buildColumn(simulator, true, true);
+  pushedStep(simulator, *column.top, 1000);
   ASSERT_EQ(simulator.contacts.size(), static_cast<std::size_t>(columnHeight + 1))
       << "the loose disk should have its speculative contact";
+  const std::vector<Identity> before = identities(simulator);
   // Its contact leaves the list: the contacts after it are no longer where they were.
-  loose->r = {10, real(0.5)};
-  pushedStep(simulator, top, 2);
+  column.loose->r = {10, 5};
+  pushedStep(simulator, *column.top, 2);
+  const std::vector<Identity> after = identities(simulator);
+  ASSERT_EQ(after.size(), before.size() - 1);
+  ASSERT_FALSE(std::equal(after.begin(), after.end(), before.begin()))
+      << "a contact before the end should have left, moving the ones after it";
   EXPECT_LT(largestSpeed(simulator), tolerance);
 }
 
