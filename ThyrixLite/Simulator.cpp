@@ -119,8 +119,7 @@ void Simulator::reserveContacts(std::size_t count) {
   contacts.items_.reserve(count);
   previousContacts_.reserve(count);  // the two swap at each step
   previousOrder_.reserve(count);
-  previousByShapeB_.reserve(count);
-  previousShapeB_.reserve(count);
+  previousPairs_.reserve(count);
   objectContacts_.reserve(2 * count);
   pairs_.reserve(count);
   rows_.reserve(count);

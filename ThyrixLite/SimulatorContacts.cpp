@@ -248,14 +248,15 @@ inline bool Simulator::circlesInReach(std::uint32_t shapeA, std::uint32_t shapeB
   const Vector2 d = gb.p0 - ga.p0;
   const real reach = (ga.radius + gb.radius + margin) * (1 + 64 * realEpsilon);
   if (d.lengthSquared() > reach * reach) return false;
-  pair = {ga.p0, gb.p0, ga.radius, gb.radius, margin, shapeA, shapeB};
+  pair = {ga.p0.x, ga.p0.y, gb.p0.x, gb.p0.y, ga.radius, gb.radius, margin, shapeA, shapeB};
   return true;
 }
 
 void Simulator::addCirclePairs(std::span<const CirclePair> pairs) {
   for (const CirclePair& pair : pairs) {
     const Manifold manifold =
-        collideCircles(pair.centreA, pair.radiusA, pair.centreB, pair.radiusB, pair.margin);
+        collideCircles({pair.centreAx, pair.centreAy}, pair.radiusA, {pair.centreBx, pair.centreBy},
+                       pair.radiusB, pair.margin);
     if (manifold.count == 0) continue;
     const ManifoldPoint& p = manifold.points[0];
     const Shape& a = shapes_[pair.shapeA];

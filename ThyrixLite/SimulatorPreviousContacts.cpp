@@ -7,34 +7,44 @@
 
 namespace thyrix {
 
+namespace {
+
+/// A pair of shapes as one number, ordered by shape A, then shape B.
+std::uint64_t pairKey(std::uint32_t shapeA, std::uint32_t shapeB) {
+  return std::uint64_t{shapeA} << 32 | shapeB;
+}
+
+}  // namespace
+
 void Simulator::indexPreviousContacts() {
-  // Two stable counting sorts, by shape B and then by shape A: the contacts of each shape A
-  // come in order of shape B, and a pair's points in their order of detection. A lookup is
-  // then a binary search within shape A's contacts, so that a shape with many contacts (a
-  // floor under a crowd) costs a logarithm, not a scan.
+  // A counting sort by shape A (a pair's points stay in order), then a stable insertion by
+  // shape B within each shape A: the contacts mostly come so already (a border's follow the
+  // shapes' order). A pair is then found by binary search, so that a shape with many contacts
+  // (a floor under a crowd) costs a logarithm, not a scan. The pairs are kept as numbers
+  // beside the positions, for the searches.
   const std::size_t count = previousContacts_.size();
-  const auto countingSort = [this, count](auto shapeOf, std::span<const std::uint32_t> from,
-                                          std::span<std::uint32_t> to) {
-    previousStart_.assign(shapes_.size() + 1, 0);
-    for (const GlobalContactInfo& c : previousContacts_) ++previousStart_[shapeOf(c) + 1];
-    for (std::size_t s = 0; s < shapes_.size(); ++s) previousStart_[s + 1] += previousStart_[s];
-    for (std::size_t i = 0; i < count; ++i) {
-      const std::uint32_t k = from.empty() ? static_cast<std::uint32_t>(i) : from[i];
-      to[previousStart_[shapeOf(previousContacts_[k])]++] = k;
-    }
-    // The fill advanced each start to the next shape's start: shift back.
-    for (std::size_t s = shapes_.size(); s > 0; --s) previousStart_[s] = previousStart_[s - 1];
-    previousStart_[0] = 0;
-  };
-  previousByShapeB_.resize(count);
+  previousStart_.assign(shapes_.size() + 1, 0);
+  for (const GlobalContactInfo& c : previousContacts_) ++previousStart_[c.shapeA + 1];
+  for (std::size_t s = 0; s < shapes_.size(); ++s) previousStart_[s + 1] += previousStart_[s];
   previousOrder_.resize(count);
-  countingSort([](const GlobalContactInfo& c) { return c.shapeB; }, {}, previousByShapeB_);
-  countingSort([](const GlobalContactInfo& c) { return c.shapeA; }, previousByShapeB_,
-               previousOrder_);
-  // The searches read shape B from a compact array, not from the contacts' records.
-  previousShapeB_.resize(count);
-  for (std::size_t i = 0; i < count; ++i)
-    previousShapeB_[i] = previousContacts_[previousOrder_[i]].shapeB;
+  previousPairs_.resize(count);
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const GlobalContactInfo& c = previousContacts_[k];
+    const std::uint32_t i = previousStart_[c.shapeA]++;
+    previousOrder_[i] = k;
+    previousPairs_[i] = pairKey(c.shapeA, c.shapeB);
+  }
+  for (std::size_t i = 1; i < count; ++i) {
+    const std::uint32_t order = previousOrder_[i];
+    const std::uint64_t pair = previousPairs_[i];
+    std::size_t j = i;
+    for (; j > 0 && previousPairs_[j - 1] > pair; --j) {
+      previousOrder_[j] = previousOrder_[j - 1];
+      previousPairs_[j] = previousPairs_[j - 1];
+    }
+    previousOrder_[j] = order;
+    previousPairs_[j] = pair;
+  }
   previousCursor_ = 0;
   previousIndexed_ = true;
 }
@@ -42,17 +52,16 @@ void Simulator::indexPreviousContacts() {
 std::span<const std::uint32_t> Simulator::previousContactsOf(std::uint32_t shapeA,
                                                              std::uint32_t shapeB) {
   if (!previousIndexed_) indexPreviousContacts();
-  const std::size_t begin = previousStart_[shapeA];
-  const std::size_t end = previousStart_[shapeA + 1];
-  const std::uint32_t* const keys = previousShapeB_.data();
+  const std::uint64_t pair = pairKey(shapeA, shapeB);
+  const std::uint64_t* const pairs = previousPairs_.data();
+  const std::size_t count = previousPairs_.size();
   // Pairs come in nearly the last step's order (a border's with the shapes in order): the
   // pair's contacts usually begin where the last pair's ended. Else a binary search.
   std::size_t first = previousCursor_;
-  if (!(first >= begin && first < end && keys[first] == shapeB &&
-        (first == begin || keys[first - 1] < shapeB)))
-    first = static_cast<std::size_t>(std::lower_bound(keys + begin, keys + end, shapeB) - keys);
+  if (!(first < count && pairs[first] == pair && (first == 0 || pairs[first - 1] < pair)))
+    first = static_cast<std::size_t>(std::lower_bound(pairs, pairs + count, pair) - pairs);
   std::size_t last = first;
-  while (last < end && keys[last] == shapeB) ++last;
+  while (last < count && pairs[last] == pair) ++last;
   previousCursor_ = last;
   return std::span(previousOrder_).subspan(first, last - first);
 }

@@ -1,11 +1,17 @@
-// Benchmarks of the ThyrixLite core: the step of a settled pile as the body count grows, and
-// the broad phase alone on the same layouts, to show both scale near-linearly.
+// Benchmarks of the ThyrixLite core: the step of a settled pile as the body count grows, the
+// broad phase alone on the same layouts, and a crowd on one floor, to show they scale
+// near-linearly.
 
 #include <Scenes.h>
+#include <ThyrixLite/Border.h>
 #include <ThyrixLite/BroadPhase.h>
+#include <ThyrixLite/Circle.h>
 #include <ThyrixLite/Simulator.h>
 
 #include <benchmark/benchmark.h>
+
+#include <memory>
+#include <vector>
 
 namespace thyrix {
 namespace {
@@ -62,6 +68,30 @@ void BM_DetectContacts(benchmark::State& state) { detectContacts(state, false); 
 void BM_DetectContactsAtRest(benchmark::State& state) { detectContacts(state, true); }
 BENCHMARK(BM_DetectContacts)->Arg(1000)->Arg(4000)->Arg(16000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_DetectContactsAtRest)->Arg(1000)->Arg(4000)->Arg(16000)->Unit(benchmark::kMicrosecond);
+
+/// A row of disks apart from each other on one floor, each pushed down: every contact is
+/// with the floor, and every step's are the last step's. The floor is one side of all of them,
+/// which cost a scan of its contacts per lookup before the last contacts were indexed by pair.
+void BM_CrowdOnFloor(benchmark::State& state) {
+  Simulator simulator(real(0.01));
+  simulator.setContactSolver(ContactSolverKind::GaussSeidel);
+  simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
+  std::vector<PhysicalObject*> disks;
+  for (std::int64_t i = 0; i < state.range(0); ++i) {
+    auto& disk = simulator.registerObject(std::make_unique<Circle>(real(0.5), real(1)));
+    disk.r = {real(1.5) * static_cast<real>(i), real(0.5)};
+    disks.push_back(&disk);
+  }
+  for (auto _ : state) {
+    scenes::push(disks, {0, -1});
+    simulator.advanceTime();
+  }
+  state.counters["contacts"] = static_cast<double>(simulator.contacts.size());
+  state.counters["ns_per_body"] = benchmark::Counter(
+      static_cast<double>(state.iterations()) * static_cast<double>(state.range(0)),
+      benchmark::Counter::kIsRate | benchmark::Counter::kInvert, benchmark::Counter::kIs1000);
+}
+BENCHMARK(BM_CrowdOnFloor)->Arg(1000)->Arg(4000)->Arg(16000)->Unit(benchmark::kMicrosecond);
 
 void BM_Arena(benchmark::State& state) {
   Simulator simulator(real(0.01));
