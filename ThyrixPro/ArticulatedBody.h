@@ -218,7 +218,8 @@ class ArticulatedBody {
   /// section 7.3): each body's articulated inertia `D^A_i` about its frame origin in world
   /// axes, `U_i = D^A_i S_i` and `d_i = S_i^T U_i` (plus the joint damping `c_i`). Cached:
   /// solve() and respond() recompute them, in the same sweep as their own inward pass, only
-  /// when the state or a damping has changed since.
+  /// when the state or a damping has changed since (solve() then stores only the base's
+  /// `D^A`: see articulatedInertia()).
   void computeArticulatedInertias();
 
   /// The velocities from joint torques and external wrenches, in O(N).
@@ -255,8 +256,10 @@ class ArticulatedBody {
   [[nodiscard]] Output makeOutput() const { return Output(linkCount()); }
 
   /// The cached articulated inertia `D^A` of body @p b (-1 the base) about its frame origin,
-  /// world axes, ordered (angular, x, y); valid after computeArticulatedInertias() (solve()
-  /// keeps only the base's).
+  /// world axes, ordered (angular, x, y). A link's is valid after computeArticulatedInertias()
+  /// (or a respond() that found the inertias out of date) until the next change of the state or
+  /// of a damping, and not updated by solve(), which keeps only the base's (a chain's solve
+  /// needs no other).
   [[nodiscard]] const SymmetricMatrix3& articulatedInertia(int b) const {
     return articulatedInertia_[b + 1];
   }
@@ -276,7 +279,7 @@ class ArticulatedBody {
   /// bias_, and the articulated inertias too when @p withInertias, with the joint damping when
   /// @p damped (else all c_i are zero). When @p general every body's bias_ slot is read
   /// (respond()'s test forces) and every articulated inertia stored; otherwise only the slots
-  /// that gather the terms of children (gathers_) are read, the others being zero, and only the
+  /// that gather the terms of children (gathers_) are read (the others are not), and only the
   /// base's inertia is kept.
   template <bool withInertias, bool damped, bool general>
   void inwardPass(std::span<const Vector3> externalWrenches, const real* torques);
