@@ -18,43 +18,48 @@ std::uint64_t lowBits(std::uint32_t count) {
 }
 
 #if defined(__SSE2__)
-// Bit j set when box j of @p count overlaps the box of corners (@p lx, @p ly), (@p ux, @p uy):
-// two doubles, or four floats, per instruction (a comparison with NaN is false, as in C++).
-// Bits from count on are garbage (padding): the caller masks them.
-[[maybe_unused]] std::uint64_t overlapBits(double lx, double ux, double ly, double uy,
-                                           const double* lowerX, const double* upperX,
-                                           const double* lowerY, const double* upperY,
-                                           std::uint32_t count) {
-  const __m128d boxLowerX = _mm_set1_pd(lx);
-  const __m128d boxUpperX = _mm_set1_pd(ux);
-  const __m128d boxLowerY = _mm_set1_pd(ly);
-  const __m128d boxUpperY = _mm_set1_pd(uy);
-  std::uint64_t row = 0;
-  for (std::uint32_t j = 0; j < count; j += 2) {
-    __m128d hit = _mm_cmple_pd(boxLowerX, _mm_loadu_pd(upperX + j));
-    hit = _mm_and_pd(hit, _mm_cmple_pd(_mm_loadu_pd(lowerX + j), boxUpperX));
-    hit = _mm_and_pd(hit, _mm_cmple_pd(boxLowerY, _mm_loadu_pd(upperY + j)));
-    hit = _mm_and_pd(hit, _mm_cmple_pd(_mm_loadu_pd(lowerY + j), boxUpperY));
-    row |= static_cast<std::uint64_t>(_mm_movemask_pd(hit)) << j;
-  }
-  return row;
-}
+/// The SSE2 instructions of one precision: two doubles or four floats to a register.
+template <class Real>
+struct Sse;
+template <>
+struct Sse<double> {
+  using Vector = __m128d;
+  static constexpr std::uint32_t lanes = 2;
+  static Vector broadcast(double x) { return _mm_set1_pd(x); }
+  static Vector load(const double* p) { return _mm_loadu_pd(p); }
+  static Vector lessOrEqual(Vector a, Vector b) { return _mm_cmple_pd(a, b); }
+  static Vector both(Vector a, Vector b) { return _mm_and_pd(a, b); }
+  static int signs(Vector a) { return _mm_movemask_pd(a); }
+};
+template <>
+struct Sse<float> {
+  using Vector = __m128;
+  static constexpr std::uint32_t lanes = 4;
+  static Vector broadcast(float x) { return _mm_set1_ps(x); }
+  static Vector load(const float* p) { return _mm_loadu_ps(p); }
+  static Vector lessOrEqual(Vector a, Vector b) { return _mm_cmple_ps(a, b); }
+  static Vector both(Vector a, Vector b) { return _mm_and_ps(a, b); }
+  static int signs(Vector a) { return _mm_movemask_ps(a); }
+};
 
-[[maybe_unused]] std::uint64_t overlapBits(float lx, float ux, float ly, float uy,
-                                           const float* lowerX, const float* upperX,
-                                           const float* lowerY, const float* upperY,
-                                           std::uint32_t count) {
-  const __m128 boxLowerX = _mm_set1_ps(lx);
-  const __m128 boxUpperX = _mm_set1_ps(ux);
-  const __m128 boxLowerY = _mm_set1_ps(ly);
-  const __m128 boxUpperY = _mm_set1_ps(uy);
+// Bit j set when box j of @p count overlaps the box of corners (@p lx, @p ly), (@p ux, @p uy),
+// a register of boxes per instruction (a comparison with NaN is false, as in C++). Bits from
+// count on are garbage (padding): the caller masks them.
+std::uint64_t overlapBits(real lx, real ux, real ly, real uy, const real* lowerX,
+                          const real* upperX, const real* lowerY, const real* upperY,
+                          std::uint32_t count) {
+  using S = Sse<real>;
+  const auto boxLowerX = S::broadcast(lx);
+  const auto boxUpperX = S::broadcast(ux);
+  const auto boxLowerY = S::broadcast(ly);
+  const auto boxUpperY = S::broadcast(uy);
   std::uint64_t row = 0;
-  for (std::uint32_t j = 0; j < count; j += 4) {
-    __m128 hit = _mm_cmple_ps(boxLowerX, _mm_loadu_ps(upperX + j));
-    hit = _mm_and_ps(hit, _mm_cmple_ps(_mm_loadu_ps(lowerX + j), boxUpperX));
-    hit = _mm_and_ps(hit, _mm_cmple_ps(boxLowerY, _mm_loadu_ps(upperY + j)));
-    hit = _mm_and_ps(hit, _mm_cmple_ps(_mm_loadu_ps(lowerY + j), boxUpperY));
-    row |= static_cast<std::uint64_t>(_mm_movemask_ps(hit)) << j;
+  for (std::uint32_t j = 0; j < count; j += S::lanes) {
+    auto hit = S::lessOrEqual(boxLowerX, S::load(upperX + j));
+    hit = S::both(hit, S::lessOrEqual(S::load(lowerX + j), boxUpperX));
+    hit = S::both(hit, S::lessOrEqual(boxLowerY, S::load(upperY + j)));
+    hit = S::both(hit, S::lessOrEqual(S::load(lowerY + j), boxUpperY));
+    row |= static_cast<std::uint64_t>(S::signs(hit)) << j;
   }
   return row;
 }
