@@ -18,6 +18,8 @@
 
 namespace thyrix {
 
+struct Manifold;
+
 /// What the last step did, for monitoring and benchmarks.
 struct StepStatistics {
   std::size_t contacts = 0;           ///< contact points detected
@@ -199,6 +201,8 @@ class Simulator : public World {
   bool circlesInReach(std::uint32_t shapeA, std::uint32_t shapeB, CirclePair& pair) const;
   /// addContacts' exact test and contacts for each of @p pairs, in order.
   void addCirclePairs(std::span<const CirclePair> pairs);
+  /// Appends a contact of shapes @p shapeA and @p shapeB per point of @p manifold.
+  void appendContacts(std::uint32_t shapeA, std::uint32_t shapeB, const Manifold& manifold);
   void reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void indexPreviousContacts();
   /// Where in previousContacts_ the last step's contacts between @p shapeA and @p shapeB
@@ -257,7 +261,7 @@ class Simulator : public World {
   real geometryTravel_ = 0;        // speculativeTravel the cached travels were computed with
   bool contactsComplete_ = false;  // `contacts` holds exactly one detection's contacts
   bool previousValid_ = false;     // previousContacts_ is the last detection's, complete
-  bool previousIndexed_ = false;   // previousStart_ and previousOrder_ are up to date
+  bool previousIndexed_ = false;   // previousOrder_ and previousPairs_ are up to date
   bool contactsSolved_ = false;    // the solver wrote the forces of `contacts`
   bool previousSolved_ = false;    // previousContacts_ carries its solve's forces (warm start)
   // The objects that do not keep PhysicalObject's step hooks, in registration order (the

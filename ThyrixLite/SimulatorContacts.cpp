@@ -233,6 +233,18 @@ void Simulator::reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
   }
 }
 
+// Inline: the narrow phase calls it for every pair in reach.
+inline void Simulator::appendContacts(std::uint32_t shapeA, std::uint32_t shapeB,
+                                      const Manifold& manifold) {
+  const Shape& a = shapes_[shapeA];
+  const Shape& b = shapes_[shapeB];
+  for (int i = 0; i < manifold.count; ++i) {
+    const ManifoldPoint& p = manifold.points[i];
+    contacts.items_.push_back({a.object, b.object, a.primitive, b.primitive, a.body, b.body, shapeA,
+                               shapeB, p.feature, p.point, manifold.normal, p.depth, 0});
+  }
+}
+
 // Inline: the detection loop calls it for every pair of two circles.
 inline bool Simulator::circlesInReach(std::uint32_t shapeA, std::uint32_t shapeB,
                                       CirclePair& pair) const {
@@ -257,13 +269,7 @@ void Simulator::addCirclePairs(std::span<const CirclePair> pairs) {
     const Manifold manifold =
         collideCircles({pair.centreAx, pair.centreAy}, pair.radiusA, {pair.centreBx, pair.centreBy},
                        pair.radiusB, pair.margin);
-    if (manifold.count == 0) continue;
-    const ManifoldPoint& p = manifold.points[0];
-    const Shape& a = shapes_[pair.shapeA];
-    const Shape& b = shapes_[pair.shapeB];
-    contacts.items_.push_back({a.object, b.object, a.primitive, b.primitive, a.body, b.body,
-                               pair.shapeA, pair.shapeB, p.feature, p.point, manifold.normal,
-                               p.depth, 0});
+    appendContacts(pair.shapeA, pair.shapeB, manifold);
   }
 }
 
@@ -281,14 +287,7 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
   const real margin =
       (a.type == ShapeType::HalfPlane ? gb.margin : std::min(ga.margin, gb.margin)) + ga.travel +
       gb.travel;
-
-  const auto append = [&](const Manifold& manifold) {
-    for (int i = 0; i < manifold.count; ++i) {
-      const ManifoldPoint& p = manifold.points[i];
-      contacts.items_.push_back({a.object, b.object, a.primitive, b.primitive, a.body, b.body,
-                                 shapeA, shapeB, p.feature, p.point, manifold.normal, p.depth, 0});
-    }
-  };
+  const auto append = [&](const Manifold& manifold) { appendContacts(shapeA, shapeB, manifold); };
   switch (a.type) {
     case ShapeType::HalfPlane:
       append(b.type == ShapeType::Circle
