@@ -21,30 +21,24 @@ std::uint64_t bitsOf(real a) {
 bool sameBits(real a, real b) { return bitsOf(a) == bitsOf(b); }
 bool sameBits(Vector2 a, Vector2 b) { return sameBits(a.x, b.x) && sameBits(a.y, b.y); }
 
+/// Widens the box (@p boxMin, @p boxMax) to take in the box (@p lower, @p upper), coordinate
+/// by coordinate (a body's box is this union of its shapes' boxes, in shape order).
+void include(Vector2& boxMin, Vector2& boxMax, Vector2 lower, Vector2 upper) {
+  boxMin = {std::min(boxMin.x, lower.x), std::min(boxMin.y, lower.y)};
+  boxMax = {std::max(boxMax.x, upper.x), std::max(boxMax.y, upper.y)};
+}
+
 }  // namespace
 
 // Inline: called from updateGeometry, the only caller, for the unmoved shapes of a composed
 // body some of whose shapes moved (their geometry is as updateShape left it).
 inline void Simulator::addCachedBox(std::uint32_t s, Vector2& boxMin, Vector2& boxMax) const {
+  if (shapes_[s].type == ShapeType::HalfPlane) return;  // unbounded: no box
+  // A circle's axis is its centre twice (see updateShape): the capsule's box is its box.
   const ShapeGeometry& g = geometry_[s];
-  Vector2 lower;
-  Vector2 upper;
-  switch (shapes_[s].type) {
-    case ShapeType::HalfPlane:
-      return;  // unbounded: no box
-    case ShapeType::Circle:
-      lower = g.p0 - Vector2{g.radius, g.radius};
-      upper = g.p0 + Vector2{g.radius, g.radius};
-      break;
-    case ShapeType::Capsule:
-      lower =
-          Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} - Vector2{g.radius, g.radius};
-      upper =
-          Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} + Vector2{g.radius, g.radius};
-      break;
-  }
-  boxMin = {std::min(boxMin.x, lower.x), std::min(boxMin.y, lower.y)};
-  boxMax = {std::max(boxMax.x, upper.x), std::max(boxMax.y, upper.y)};
+  const Vector2 radius{g.radius, g.radius};
+  include(boxMin, boxMax, Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} - radius,
+          Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} + radius);
 }
 
 // Recomputes shape @p s's geometry and grid box; sets @p lower and @p upper to its box without
@@ -73,7 +67,7 @@ inline bool Simulator::updateShape(std::uint32_t s, bool poseKnown, bool standal
       return false;  // unbounded: no box, not in the grid
     case ShapeType::Circle:
       g.p0 = r;  // a circle's geometry does not depend on its angle
-      g.p1 = r;  // (unread: lets the box below be the capsule's, min and max of equal ends)
+      g.p1 = r;  // the box below and addCachedBox's are then the capsule's (equal ends)
       if (!standalone) {
         pose.r = r;
         pose.alpha = alpha;
@@ -157,10 +151,7 @@ THYRIX_FORCE_INLINE void Simulator::updateBody(std::uint32_t index, bool changed
     // A shape that travelled in the last step has a wider margin, narrowed when it stops.
     if (!changed && geometry_[s].travel == 0) return;
     shapeMoved[s] = 1;
-    if (updateShape(s, known, true, lower, upper)) {
-      boxMin = {std::min(boxMin.x, lower.x), std::min(boxMin.y, lower.y)};
-      boxMax = {std::max(boxMax.x, upper.x), std::max(boxMax.y, upper.y)};
-    }
+    if (updateShape(s, known, true, lower, upper)) include(boxMin, boxMax, lower, upper);
     body.boxMin = boxMin;
     body.boxMax = boxMax;
     // While it travels, the body is looked at in this loop even when its pose stays the same.
@@ -187,9 +178,7 @@ THYRIX_FORCE_INLINE void Simulator::updateBody(std::uint32_t index, bool changed
       for (std::uint32_t t = state.firstShape; t < s; ++t) addCachedBox(t, boxMin, boxMax);
     anyMoved = true;
     primitive.followOwner();
-    if (!updateShape(s, known, false, lower, upper)) continue;
-    boxMin = {std::min(boxMin.x, lower.x), std::min(boxMin.y, lower.y)};
-    boxMax = {std::max(boxMax.x, upper.x), std::max(boxMax.y, upper.y)};
+    if (updateShape(s, known, false, lower, upper)) include(boxMin, boxMax, lower, upper);
   }
   if (!anyMoved) return;
   body.boxMin = boxMin;
