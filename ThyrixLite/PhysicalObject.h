@@ -38,9 +38,15 @@ class PhysicalObject : public GraphicalObject {
   PhysicalObject& operator=(const PhysicalObject&) = delete;
   ~PhysicalObject() override = default;
 
-  Vector2 r;                ///< position of the centre of mass, world coordinates (m)
+  // The fields every step reads come first, together: each phase that visits the bodies
+  // then reads one or two cache lines of each, not three or four.
+  Vector2 r;           ///< position of the centre of mass, world coordinates (m)
+  real alpha = 0;      ///< orientation (rad, counter-clockwise)
+  bool fixed = false;  ///< a fixed object never moves: it has infinite mass
+  /// Objects sharing a non-zero group never touch each other (the bodies of one agent, say);
+  /// group 0 touches everything.
+  std::uint32_t collisionGroup = 0;
   Vector2 v;                ///< linear velocity (m/s), computed each step
-  real alpha = 0;           ///< orientation (rad, counter-clockwise)
   real omega = 0;           ///< angular velocity (rad/s), computed each step
   real m;                   ///< quasistatic mass: force per unit velocity (N s/m)
   real I;                   ///< moment of inertia about the centre of mass: torque per unit rate
@@ -51,10 +57,6 @@ class PhysicalObject : public GraphicalObject {
   /// This step's contacts of this object: a view into the simulator's contact storage, valid
   /// until the next step starts.
   std::span<ContactInfo> contacts;
-  bool fixed = false;  ///< a fixed object never moves: it has infinite mass
-  /// Objects sharing a non-zero group never touch each other (the bodies of one agent, say);
-  /// group 0 touches everything.
-  std::uint32_t collisionGroup = 0;
 
   /// Phase 5 of a step: velocities from the accumulated external force and torque alone,
   /// `v = F / m`, `omega = torque / I`; the accumulators are then reset to zero.
