@@ -34,16 +34,26 @@ void Simulator::indexPreviousContacts() {
     previousOrder_[i] = k;
     previousPairs_[i] = pairKey(c.shapeA, c.shapeB);
   }
+  // The largest pair so far stays in a register: an entry already in place (most) is neither
+  // stored back nor read again (measured: the store of each entry, read back by the next
+  // one's comparison, made the loop wait on memory).
+  std::uint64_t* const pairs = previousPairs_.data();
+  std::uint32_t* const order = previousOrder_.data();
+  std::uint64_t largest = count > 0 ? pairs[0] : 0;
   for (std::size_t i = 1; i < count; ++i) {
-    const std::uint32_t order = previousOrder_[i];
-    const std::uint64_t pair = previousPairs_[i];
-    std::size_t j = i;
-    for (; j > 0 && previousPairs_[j - 1] > pair; --j) {
-      previousOrder_[j] = previousOrder_[j - 1];
-      previousPairs_[j] = previousPairs_[j - 1];
+    const std::uint64_t pair = pairs[i];
+    if (pair >= largest) {
+      largest = pair;
+      continue;
     }
-    previousOrder_[j] = order;
-    previousPairs_[j] = pair;
+    const std::uint32_t position = order[i];
+    std::size_t j = i;
+    for (; j > 0 && pairs[j - 1] > pair; --j) {
+      order[j] = order[j - 1];
+      pairs[j] = pairs[j - 1];
+    }
+    order[j] = position;
+    pairs[j] = pair;
   }
   previousCursor_ = 0;
   previousIndexed_ = true;
