@@ -197,7 +197,8 @@ class Simulator : public World {
   };
   static constexpr std::size_t circleBatch = 64;  // CirclePairs kept before they are tested
   /// addContacts' tests for two circles before the exact one (whether shapes of one body
-  /// may touch is settled by the caller); true, with @p pair filled, if it is to be run.
+  /// may touch is settled by the caller); true if it is to be run. @p pair is filled then, and
+  /// also when only the distance rules the pair out (so a caller may keep it without a branch).
   bool circlesInReach(std::uint32_t shapeA, std::uint32_t shapeB, CirclePair& pair) const;
   /// addContacts' exact test and contacts for each of @p pairs, in order.
   void addCirclePairs(std::span<const CirclePair> pairs);

@@ -68,8 +68,10 @@ void Simulator::detectContacts() {
       flush();
       reuseContacts(a, b);
     } else if (sa.type == ShapeType::Circle && sb.type == ShapeType::Circle) {
-      if (!circlesInReach(a, b, batch[batched])) continue;
-      if (++batched == circleBatch) flush();
+      // Kept (the count advanced) without a branch: which candidates are in reach is random to
+      // the predictor.
+      batched += std::size_t{circlesInReach(a, b, batch[batched])};
+      if (batched == circleBatch) flush();
     } else {
       flush();
       addContacts(a, b);
@@ -258,10 +260,10 @@ inline bool Simulator::circlesInReach(std::uint32_t shapeA, std::uint32_t shapeB
   // Some candidate pairs of a crowd are out of reach: a conservative test on squared
   // distances (no square root, no call) drops them; the rest get the exact test.
   const Vector2 d = gb.p0 - ga.p0;
+  // (The pair is written whether or not it is kept, so that the caller need not branch.)
   const real reach = (ga.radius + gb.radius + margin) * (1 + 64 * realEpsilon);
-  if (d.lengthSquared() > reach * reach) return false;
   pair = {ga.p0.x, ga.p0.y, gb.p0.x, gb.p0.y, ga.radius, gb.radius, margin, shapeA, shapeB};
-  return true;
+  return !(d.lengthSquared() > reach * reach);
 }
 
 void Simulator::addCirclePairs(std::span<const CirclePair> pairs) {
