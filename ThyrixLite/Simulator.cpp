@@ -120,6 +120,7 @@ void Simulator::reserveContacts(std::size_t count) {
   previousContacts_.reserve(count);  // the two swap at each step
   previousOrder_.reserve(count);
   previousPairs_.reserve(count);
+  previousKeys_.reserve(count);
   objectContacts_.reserve(2 * count);
   pairs_.reserve(count);
   rows_.reserve(count);

@@ -256,8 +256,9 @@ class Simulator : public World {
   std::vector<std::uint32_t> previousStart_;         // counting sort by shape A: offsets
   std::vector<std::uint32_t> previousOrder_;         // by shape A, then B: positions
   std::vector<std::uint64_t> previousPairs_;         // each previousOrder_ entry's shapes, A then B
-  std::size_t previousCursor_ = 0;                   // previousOrder_ after the last pair found
-  std::size_t previousHint_ = 0;                     // the warm start's next guess
+  std::vector<std::uint64_t> previousKeys_;  // indexPreviousContacts: the pairs in list order
+  std::size_t previousCursor_ = 0;           // previousOrder_ after the last pair found
+  std::size_t previousHint_ = 0;             // the warm start's next guess
   real geometryFraction_ = 0;      // speculativeFraction the cached margins were computed with
   real geometryTravel_ = 0;        // speculativeTravel the cached travels were computed with
   bool contactsComplete_ = false;  // `contacts` holds exactly one detection's contacts

@@ -22,17 +22,24 @@ void Simulator::indexPreviousContacts() {
   // shapes' order). A pair is then found by binary search, so that a shape with many contacts
   // (a floor under a crowd) costs a logarithm, not a scan. The pairs are kept as numbers
   // beside the positions, for the searches.
+  // The contacts are read once, their pairs copied to previousKeys_ for the second pass (a
+  // contact is as long as a cache line and more: a second pass over them cost as much again).
   const std::size_t count = previousContacts_.size();
   previousStart_.assign(shapes_.size() + 1, 0);
-  for (const GlobalContactInfo& c : previousContacts_) ++previousStart_[c.shapeA + 1];
+  previousKeys_.resize(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    const GlobalContactInfo& c = previousContacts_[k];
+    ++previousStart_[c.shapeA + 1];
+    previousKeys_[k] = pairKey(c.shapeA, c.shapeB);
+  }
   for (std::size_t s = 0; s < shapes_.size(); ++s) previousStart_[s + 1] += previousStart_[s];
   previousOrder_.resize(count);
   previousPairs_.resize(count);
   for (std::uint32_t k = 0; k < count; ++k) {
-    const GlobalContactInfo& c = previousContacts_[k];
-    const std::uint32_t i = previousStart_[c.shapeA]++;
+    const std::uint64_t key = previousKeys_[k];
+    const std::uint32_t i = previousStart_[key >> 32]++;
     previousOrder_[i] = k;
-    previousPairs_[i] = pairKey(c.shapeA, c.shapeB);
+    previousPairs_[i] = key;
   }
   // The largest pair so far stays in a register: an entry already in place (most) is neither
   // stored back nor read again (measured: the store of each entry, read back by the next
