@@ -152,7 +152,7 @@ void BroadPhase::reserveFor(std::uint32_t count) {
   // more than the dense grid's limit or the hash table's buckets.
   if (count <= reservedCount_) return;
   const auto cells = static_cast<std::size_t>(denseCellsPerBox * count + denseCellsMargin);
-  cellStart_.reserve(std::max<std::size_t>(cells, bucketCountFor(count)) + 1);
+  cellStart_.reserve(std::max<std::size_t>(cells, bucketCountFor(count)) + 2);
   cellCursor_.reserve(cellStart_.capacity());
   for (auto* buffer : {&cellOfBox_, &sortedBoxes_, &slotOfBox_, &oversized_})
     buffer->reserve(count);
@@ -222,7 +222,7 @@ void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, real extent
   }
 }
 
-void BroadPhase::sortByCell(std::uint32_t count, std::uint32_t cellCount, bool withSlots) {
+void BroadPhase::sortByCell(std::uint32_t count, std::uint32_t cellCount) {
   // Counting sort in index order, so each cell lists its boxes by increasing index.
   cellStart_.assign(cellCount + 1, 0);
   for (std::uint32_t i = 0; i < count; ++i)
@@ -230,18 +230,8 @@ void BroadPhase::sortByCell(std::uint32_t count, std::uint32_t cellCount, bool w
   for (std::uint32_t c = 0; c < cellCount; ++c) cellStart_[c + 1] += cellStart_[c];
   cellCursor_.assign(cellStart_.begin(), cellStart_.end() - 1);
   sortedBoxes_.resize(cellStart_[cellCount]);
-  if (!withSlots) {
-    for (std::uint32_t i = 0; i < count; ++i)
-      if (cellOfBox_[i] != oversizedMark) sortedBoxes_[cellCursor_[cellOfBox_[i]]++] = i;
-    return;
-  }
-  slotOfBox_.resize(count);
-  for (std::uint32_t i = 0; i < count; ++i) {
-    if (cellOfBox_[i] == oversizedMark) continue;
-    const std::uint32_t slot = cellCursor_[cellOfBox_[i]]++;
-    sortedBoxes_[slot] = i;
-    slotOfBox_[i] = slot;
-  }
+  for (std::uint32_t i = 0; i < count; ++i)
+    if (cellOfBox_[i] != oversizedMark) sortedBoxes_[cellCursor_[cellOfBox_[i]]++] = i;
 }
 
 void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::int64_t lowX,
@@ -253,10 +243,28 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
   const auto count = static_cast<std::uint32_t>(boxes.size());
   const auto cellCount = static_cast<std::uint32_t>(columns * rows);
   const auto stride = static_cast<std::uint32_t>(rows);
-  for (std::uint32_t i = 0; i < count; ++i)
-    if (cellOfBox_[i] != oversizedMark)
-      cellOfBox_[i] = static_cast<std::uint32_t>((cellX_[i] - lowX) * rows + (cellY_[i] - lowY));
-  sortByCell(count, cellCount, true);
+  // Counting sort in index order (each cell lists its boxes by increasing index), counted as
+  // the cells are numbered. Counts are kept one entry late, so that the fill's cursors are
+  // cellStart_ itself: cell c's cursor is entry c + 1, which ends as its end, the start of c + 1
+  // (no copy of the starts for cursors, no second pass to count).
+  cellStart_.assign(std::size_t{cellCount} + 2, 0);
+  std::uint32_t* const cellOfBox = cellOfBox_.data();
+  std::uint32_t* const cells = cellStart_.data();
+  for (std::uint32_t i = 0; i < count; ++i) {
+    if (cellOfBox[i] == oversizedMark) continue;
+    const auto cell = static_cast<std::uint32_t>((cellX_[i] - lowX) * rows + (cellY_[i] - lowY));
+    cellOfBox[i] = cell;
+    ++cells[cell + 2];
+  }
+  for (std::uint32_t c = 0; c < cellCount; ++c) cells[c + 2] += cells[c + 1];
+  sortedBoxes_.resize(cells[cellCount + 1]);
+  slotOfBox_.resize(count);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    if (cellOfBox[i] == oversizedMark) continue;
+    const std::uint32_t slot = cells[cellOfBox[i] + 1]++;
+    sortedBoxes_[slot] = i;
+    slotOfBox_[i] = slot;
+  }
 
   // The same visiting order as the hashed grid: own cell (higher indices: those after the
   // box itself, as a cell lists its boxes by index), then the cells (x+1, y-1), (x+1, y),
@@ -313,7 +321,7 @@ void BroadPhase::findPairsInHashedGrid(std::span<const BoundingBox> boxes,
   const std::uint32_t mask = bucketCount - 1;
   for (std::uint32_t i = 0; i < count; ++i)
     if (cellOfBox_[i] != oversizedMark) cellOfBox_[i] = hashCell(cellX_[i], cellY_[i], mask);
-  sortByCell(count, bucketCount, false);
+  sortByCell(count, bucketCount);
 
   // Regular pairs. A box can only overlap boxes whose centres lie in the 3 x 3 cells around
   // its own; visiting its own cell (higher indices only) and the four "forward" cells (all

@@ -84,9 +84,8 @@ class BroadPhase {
                             std::vector<BoxPair>& pairs);
   void findPairsInHashedGrid(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
   /// Groups the regular boxes by cellOfBox_ (cells 0 to cellCount - 1) into sortedBoxes_,
-  /// with cellStart_ marking each cell's range.
-  /// With @p withSlots, slotOfBox_ gets each regular box's position in sortedBoxes_.
-  void sortByCell(std::uint32_t count, std::uint32_t cellCount, bool withSlots);
+  /// with cellStart_ marking each cell's range (the hashed grid; the dense grid sorts its own).
+  void sortByCell(std::uint32_t count, std::uint32_t cellCount);
   void reserveFor(std::uint32_t count);
 
   // Few boxes: the corners by coordinate, smallCount + 3 of each (padding for whole vectors)
@@ -104,7 +103,7 @@ class BroadPhase {
   std::vector<std::uint32_t> cellOfBox_;     // cell (dense) or bucket (hashed) of each box
   std::vector<std::int64_t> cellX_, cellY_;  // integer cell coordinates of each regular box
   std::vector<std::uint32_t> cellStart_;     // counting-sort offsets, one per cell/bucket + 1
-  std::vector<std::uint32_t> cellCursor_;    // fill position of each cell during the sort
+  std::vector<std::uint32_t> cellCursor_;    // fill position of each bucket during the sort
   std::vector<std::uint32_t> sortedBoxes_;   // regular boxes grouped by cell, by index within
   std::vector<std::uint32_t> oversized_;     // boxes larger than a cell
   std::vector<std::uint32_t> slotOfBox_;     // position of each box in sortedBoxes_ (dense)
