@@ -7,6 +7,10 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <type_traits>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace thyrix {
 
@@ -109,6 +113,46 @@ std::uint64_t reachesBehind(const BorderLine& line, Vector2 centre, Vector2 half
   return std::uint64_t{dot(centre - line.point, line.normal) - extent <= 0};
 }
 
+#if defined(__SSE2__)
+/// reachesBehind for the 64 boxes from @p boxes, two at a time (one box per half of a
+/// register: the same operations in the same order, so the same bits), ORed into @p reach.
+/// (Double only: a float build keeps the plain loop.)
+template <std::size_t Borders>
+void reachFullWord(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t* reach) {
+  const auto* const corners = reinterpret_cast<const double*>(boxes);  // lower x, y, upper x, y
+  const __m128d half = _mm_set1_pd(0.5);
+  const __m128d zero = _mm_setzero_pd();
+  std::uint64_t bits[Borders] = {};
+  for (std::size_t j = 0; j < 64; j += 2) {
+    const double* const a = corners + 4 * j;
+    const __m128d lowerA = _mm_loadu_pd(a);
+    const __m128d upperA = _mm_loadu_pd(a + 2);
+    const __m128d lowerB = _mm_loadu_pd(a + 4);
+    const __m128d upperB = _mm_loadu_pd(a + 6);
+    const __m128d lowerX = _mm_unpacklo_pd(lowerA, lowerB);
+    const __m128d lowerY = _mm_unpackhi_pd(lowerA, lowerB);
+    const __m128d upperX = _mm_unpacklo_pd(upperA, upperB);
+    const __m128d upperY = _mm_unpackhi_pd(upperA, upperB);
+    const __m128d centreX = _mm_mul_pd(_mm_add_pd(lowerX, upperX), half);
+    const __m128d centreY = _mm_mul_pd(_mm_add_pd(lowerY, upperY), half);
+    const __m128d halfX = _mm_mul_pd(_mm_sub_pd(upperX, lowerX), half);
+    const __m128d halfY = _mm_mul_pd(_mm_sub_pd(upperY, lowerY), half);
+    for (std::size_t k = 0; k < Borders; ++k) {
+      const BorderLine& line = lines[k];
+      const __m128d along = _mm_add_pd(
+          _mm_mul_pd(_mm_sub_pd(centreX, _mm_set1_pd(line.point.x)), _mm_set1_pd(line.normal.x)),
+          _mm_mul_pd(_mm_sub_pd(centreY, _mm_set1_pd(line.point.y)), _mm_set1_pd(line.normal.y)));
+      const __m128d extent = _mm_add_pd(_mm_mul_pd(_mm_set1_pd(line.absNormal.x), halfX),
+                                        _mm_mul_pd(_mm_set1_pd(line.absNormal.y), halfY));
+      const auto hit = static_cast<std::uint64_t>(
+          _mm_movemask_pd(_mm_cmple_pd(_mm_sub_pd(along, extent), zero)));
+      bits[k] |= hit << j;
+    }
+  }
+  for (std::size_t k = 0; k < Borders; ++k) reach[k] |= bits[k];
+}
+#endif
+
 /// Sets in @p reach (one word per border of @p lines) the bits of @p retest whose boxes (from
 /// @p boxes, the word's first) reach behind each border. A whole word of moved shapes (a crowd
 /// in motion) is a plain loop over its 64 boxes, without the walk over its bits.
@@ -123,6 +167,12 @@ void reachWord(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t 
       reach[k] |= bit & (std::uint64_t{0} - reachesBehind(lines[k], centre, half));
   };
   if (retest == ~std::uint64_t{0}) {
+#if defined(__SSE2__)
+    if constexpr (std::is_same_v<real, double>) {
+      reachFullWord<Borders>(lines, boxes, reach);
+      return;
+    }
+#endif
     for (std::size_t j = 0; j < 64; ++j) test(j, std::uint64_t{1} << j);
     return;
   }

@@ -180,6 +180,45 @@ TEST(RestSkipping, SameContactsAndStatesAsTestingEverything) { runSideBySide(0);
 
 TEST(RestSkipping, SameContactsAndStatesInTheGrid) { runSideBySide(60); }
 
+// A crowd in motion: every word of 64 grid shapes moved, so the borders' reach is retested for
+// all of them at once (a path of its own), with one border that is not axis-aligned. The same
+// contacts as the per-shape test of a simulator without rest skipping.
+TEST(RestSkipping, BordersMeetACrowdInMotionAsTestingEverything) {
+  Simulator cached;
+  Simulator plain;
+  plain.restSkipping = false;
+  std::vector<std::vector<Circle*>> crowds;
+  for (Simulator* simulator : {&cached, &plain}) {
+    simulator->registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
+    simulator->registerObject(std::make_unique<Border>(Vector2{-1, 0}, Vector2{1, 0}));
+    simulator->registerObject(
+        std::make_unique<Border>(Vector2{12, 0}, Vector2{real(-0.8), real(0.6)}));
+    std::vector<Circle*> crowd;
+    MTRandom random(3);
+    for (int i = 0; i < 200; ++i) {
+      auto& circle = simulator->registerObject(std::make_unique<Circle>(real(0.3), real(1)));
+      circle.r = {real(0.7) * static_cast<real>(i % 14),
+                  real(0.5) + real(0.7) * static_cast<real>(i / 14) +
+                      static_cast<real>(random.uniform(0, 0.1))};
+      crowd.push_back(&circle);
+    }
+    crowds.push_back(crowd);
+  }
+  std::size_t borderContacts = 0;
+  for (int step = 0; step < 150; ++step) {
+    for (std::size_t w = 0; w < 2; ++w)
+      for (Circle* circle : crowds[w]) circle->externalForce += Vector2{real(0.3), -2};
+    cached.advanceTime();
+    plain.advanceTime();
+    expectSameContacts(cached, plain, step);
+    if (::testing::Test::HasFatalFailure()) return;
+    for (const GlobalContactInfo& contact : cached.contacts)
+      borderContacts += contact.shapeA < 3 ? 1 : 0;
+  }
+  EXPECT_EQ(scenes::stateHash(cached), scenes::stateHash(plain));
+  EXPECT_GT(borderContacts, 1000u) << "the crowd met the borders";
+}
+
 TEST(RestSkipping, ARestingBodyHitLaterMovesAndGetsItsContacts) {
   Simulator simulator;
   auto& pusher = simulator.registerObject(std::make_unique<Circle>(real(0.5), real(1)));
