@@ -74,7 +74,7 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
   reserveFor(gridSlot_, shapes_.size() + shapes);
   reserveFor(gridMovedBits_, words);
   reserveFor(borderReach_, borders * words);
-  reserveFor(previousStart_, shapes_.size() + shapes + 1);
+  reserveFor(previousStart_, shapes_.size() + shapes + 2);
 }
 
 void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) noexcept {

@@ -254,7 +254,7 @@ class Simulator : public World {
   std::size_t reachShapes_ = 0;               // grid shapes borderReach_ was computed for
   std::vector<GlobalContactInfo> previousContacts_;  // the last detection's contacts
   std::vector<std::uint32_t> previousStart_;         // counting sort by shape A: offsets
-  std::vector<std::uint32_t> previousOrder_;         // by shape A, then B: positions
+  std::vector<std::uint32_t> previousOrder_;         // by shape A (then B if many): positions
   std::vector<std::uint64_t> previousPairs_;         // each previousOrder_ entry's shapes, A then B
   std::vector<std::uint64_t> previousKeys_;  // indexPreviousContacts: the pairs in list order
   std::size_t previousCursor_ = 0;           // previousOrder_ after the last pair found
