@@ -79,15 +79,30 @@ inline Manifold collideHalfPlaneCircle(Vector2 point, Vector2 normal, Vector2 ce
   return narrow_phase::single(normal, centre - normal * distance, centre - normal * radius);
 }
 
-inline Manifold collideCircles(Vector2 centreA, real radiusA, Vector2 centreB, real radiusB,
-                               real margin) {
+namespace narrow_phase {
+
+/// collideCircles without a Manifold: false when out of reach, else true with the one point's
+/// @p normal and @p point (feature 0). For a caller that stores the point itself.
+inline bool circlesPoint(Vector2 centreA, real radiusA, Vector2 centreB, real radiusB, real margin,
+                         Vector2& normal, ManifoldPoint& point) {
   const Vector2 d = centreB - centreA;
   const real distance = d.length();
-  if (distance - radiusA - radiusB >= margin) return {};
-  const Vector2 n = distance > narrow_phase::relativeTolerance * (radiusA + radiusB)
-                        ? d / distance
-                        : Vector2{1, 0};
-  return narrow_phase::single(n, centreA + n * radiusA, centreB - n * radiusB);
+  if (distance - radiusA - radiusB >= margin) return false;
+  normal = distance > relativeTolerance * (radiusA + radiusB) ? d / distance : Vector2{1, 0};
+  const Vector2 surfaceA = centreA + normal * radiusA;
+  const Vector2 surfaceB = centreB - normal * radiusB;
+  point = {(surfaceA + surfaceB) * real(0.5), dot(surfaceA - surfaceB, normal), 0};
+  return true;
+}
+
+}  // namespace narrow_phase
+
+inline Manifold collideCircles(Vector2 centreA, real radiusA, Vector2 centreB, real radiusB,
+                               real margin) {
+  Manifold m;
+  if (narrow_phase::circlesPoint(centreA, radiusA, centreB, radiusB, margin, m.normal, m.points[0]))
+    m.count = 1;
+  return m;
 }
 
 }  // namespace thyrix

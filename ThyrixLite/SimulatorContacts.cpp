@@ -317,11 +317,19 @@ inline bool Simulator::circlesInReach(std::uint32_t shapeA, std::uint32_t shapeB
 }
 
 void Simulator::addCirclePairs(std::span<const CirclePair> pairs) {
+  // collideCircles' one point, stored without a Manifold in between (zeroed, then read back
+  // in a loop over its points).
   for (const CirclePair& pair : pairs) {
-    const Manifold manifold =
-        collideCircles({pair.centreAx, pair.centreAy}, pair.radiusA, {pair.centreBx, pair.centreBy},
-                       pair.radiusB, pair.margin);
-    appendContacts(pair.shapeA, pair.shapeB, manifold);
+    Vector2 normal;
+    ManifoldPoint p;
+    if (!narrow_phase::circlesPoint({pair.centreAx, pair.centreAy}, pair.radiusA,
+                                    {pair.centreBx, pair.centreBy}, pair.radiusB, pair.margin,
+                                    normal, p))
+      continue;
+    const Shape& a = shapes_[pair.shapeA];
+    const Shape& b = shapes_[pair.shapeB];
+    contacts.items_.push_back({a.object, b.object, a.primitive, b.primitive, a.body, b.body,
+                               pair.shapeA, pair.shapeB, p.feature, p.point, normal, p.depth, 0});
   }
 }
 
