@@ -156,6 +156,7 @@ void BroadPhase::reserveFor(std::uint32_t count) {
   cellCursor_.reserve(cellStart_.capacity());
   for (auto* buffer : {&cellOfBox_, &sortedBoxes_, &slotOfBox_, &oversized_})
     buffer->reserve(count);
+  candidates_.reserve(2 * std::size_t{count} + 64);
   cellX_.reserve(count);
   cellY_.reserve(count);
   sweep_.reserve(count);
@@ -272,9 +273,12 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
   // Whether a candidate overlaps is random to the branch predictor: each candidate pair is
   // written at the end of the output and kept (the end advanced) when it overlaps, without a
   // branch. The output is therefore sized ahead, for every candidate of the box at hand.
-  std::size_t n = pairs.size();
-  pairs.resize(n + 2 * std::size_t{count} + 64);
-  BoxPair* out = pairs.data();
+  // The candidates go to candidates_, which only grows (the caller's cleared output would be
+  // zero-filled when sized ahead, every call), then the pairs kept to the output.
+  std::size_t n = 0;
+  if (candidates_.size() < 2 * std::size_t{count} + 64)
+    candidates_.resize(2 * std::size_t{count} + 64);
+  BoxPair* out = candidates_.data();
   const BoundingBox* const all = boxes.data();
   const std::uint32_t* const start = cellStart_.data();
   const std::uint32_t* const sorted = sortedBoxes_.data();
@@ -287,9 +291,9 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
     const std::uint32_t nextBegin = start[own + stride - 1];
     const std::uint32_t nextEnd = start[own + stride + 2];
     const std::size_t candidates = (aboveEnd - ownBegin) + (nextEnd - nextBegin);
-    if (n + candidates > pairs.size()) {  // rare: the output doubles
-      pairs.resize(std::max(2 * pairs.size(), n + candidates));
-      out = pairs.data();
+    if (n + candidates > candidates_.size()) {  // rare: the buffer doubles
+      candidates_.resize(std::max(2 * candidates_.size(), n + candidates));
+      out = candidates_.data();
     }
     const OverlapTest<real> overlapsBox(all[i]);
     const auto overlaps = [&](std::uint32_t j) { return overlapsBox(all[j]); };
@@ -311,7 +315,11 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
     testRange(nextBegin, nextEnd);
     testRange(aboveBegin, aboveEnd);
   }
-  pairs.resize(n);
+  // (Grown geometrically, as the zero-filled output was: a count of pairs that creeps up must
+  // not reallocate the output at every new largest count.)
+  if (pairs.size() + n > pairs.capacity())
+    pairs.reserve(std::max({pairs.size() + n, 2 * pairs.capacity(), 2 * std::size_t{count} + 64}));
+  pairs.insert(pairs.end(), out, out + n);
 }
 
 void BroadPhase::findPairsInHashedGrid(std::span<const BoundingBox> boxes,

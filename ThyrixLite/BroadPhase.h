@@ -107,6 +107,7 @@ class BroadPhase {
   std::vector<std::uint32_t> sortedBoxes_;   // regular boxes grouped by cell, by index within
   std::vector<std::uint32_t> oversized_;     // boxes larger than a cell
   std::vector<std::uint32_t> slotOfBox_;     // position of each box in sortedBoxes_ (dense)
+  std::vector<BoxPair> candidates_;          // the dense grid's candidate pairs (only grows)
 
   SweepAndPrune sweep_;        // boxes along a line
   bool lastTookGrid_ = false;  // the last call of more than smallCount boxes used the grid
