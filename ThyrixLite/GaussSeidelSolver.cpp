@@ -45,7 +45,12 @@ int GaussSeidelSolver::solve(std::span<const std::uint32_t> island,
                              const ContactSolverSettings& settings) {
   gather(island, rows, bodies, settings.relaxation);
   const bool accelerate = settings.accelerateGaussSeidel;
-  if (accelerate) direction_.assign(rows_.size(), 0);
+  if (accelerate) {
+    // resize, not assign: assign would reallocate to the exact size at each new largest
+    // island (a growing pile: nearly every step), resize grows geometrically.
+    direction_.resize(rows_.size());
+    std::fill(direction_.begin(), direction_.end(), real(0));
+  }
   real lastNorm = 0;  // squared norm of the previous sweep's change
   int sweeps = 0;
   while (sweeps < settings.gaussSeidelMaxIterations) {

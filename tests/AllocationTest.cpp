@@ -40,6 +40,25 @@ TEST_P(AllocationTest, PileOf2000CirclesStepsWithoutAllocating) {
   EXPECT_EQ(test::allocationCount() - before, 0);
 }
 
+TEST_P(AllocationTest, GrowingPileWithoutReservedBuffersAllocatesOnlyToGrowThem) {
+  // Without reserveContacts, the buffers grow with the contacts: geometrically, so a pile whose
+  // contacts keep increasing step after step allocates a few times per buffer (39 in all when
+  // written), not once a step (a buffer resized to each new largest island exactly: 392).
+  Simulator simulator(real(1) / 60);
+  simulator.setContactSolver(GetParam());
+  const auto circles = scenes::addPile(simulator, 1000, 1);
+  for (int step = 0; step < 100; ++step) {
+    scenes::push(circles, {0, -1});
+    simulator.advanceTime();
+  }
+  const long before = test::allocationCount();
+  for (int step = 0; step < 400; ++step) {
+    scenes::push(circles, {0, -1});
+    simulator.advanceTime();
+  }
+  EXPECT_LT(test::allocationCount() - before, 100);
+}
+
 TEST(AllocationCounter, CountsAllocations) {
   const long before = test::allocationCount();
   std::vector<int> grown;
