@@ -26,10 +26,11 @@ struct GlobalContactInfo {
   std::uint32_t shapeA = 0;           ///< index of primitiveA among the simulator's primitives
   std::uint32_t shapeB = 0;           ///< index of primitiveB among the simulator's primitives
   std::uint32_t feature = 0;          ///< which feature pair of the two primitives (0 or 1)
-  Vector2 point;                      ///< contact point, midway between the two surfaces
-  Vector2 normal;                     ///< unit normal from A to B
-  real depth = 0;  ///< overlap along the normal; negative is a gap (speculative contact)
+  // The force next to the identity: the next step's warm start reads both, and nothing else.
   real force = 0;  ///< normal force magnitude found by the contact solver, >= 0
+  Vector2 point;   ///< contact point, midway between the two surfaces
+  Vector2 normal;  ///< unit normal from A to B
+  real depth = 0;  ///< overlap along the normal; negative is a gap (speculative contact)
 };
 
 }  // namespace thyrix

@@ -19,6 +19,7 @@
 namespace thyrix {
 
 struct Manifold;
+struct ManifoldPoint;
 
 /// What the last step did, for monitoring and benchmarks.
 struct StepStatistics {
@@ -204,6 +205,9 @@ class Simulator : public World {
   void addCirclePairs(std::span<const CirclePair> pairs);
   /// Appends a contact of shapes @p shapeA and @p shapeB per point of @p manifold.
   void appendContacts(std::uint32_t shapeA, std::uint32_t shapeB, const Manifold& manifold);
+  /// Appends the contact of shapes @p shapeA and @p shapeB at @p point along @p normal.
+  void appendContact(std::uint32_t shapeA, std::uint32_t shapeB, const ManifoldPoint& point,
+                     Vector2 normal);
   void reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void indexPreviousContacts();
   /// Where in previousContacts_ the last step's contacts between @p shapeA and @p shapeB

@@ -285,16 +285,20 @@ void Simulator::reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
   }
 }
 
+// Inline: appendContacts and the circle batches store every contact through it.
+inline void Simulator::appendContact(std::uint32_t shapeA, std::uint32_t shapeB,
+                                     const ManifoldPoint& p, Vector2 normal) {
+  const Shape& a = shapes_[shapeA];
+  const Shape& b = shapes_[shapeB];
+  contacts.items_.push_back({a.object, b.object, a.primitive, b.primitive, a.body, b.body, shapeA,
+                             shapeB, p.feature, 0, p.point, normal, p.depth});
+}
+
 // Inline: the narrow phase calls it for every pair in reach.
 inline void Simulator::appendContacts(std::uint32_t shapeA, std::uint32_t shapeB,
                                       const Manifold& manifold) {
-  const Shape& a = shapes_[shapeA];
-  const Shape& b = shapes_[shapeB];
-  for (int i = 0; i < manifold.count; ++i) {
-    const ManifoldPoint& p = manifold.points[i];
-    contacts.items_.push_back({a.object, b.object, a.primitive, b.primitive, a.body, b.body, shapeA,
-                               shapeB, p.feature, p.point, manifold.normal, p.depth, 0});
-  }
+  for (int i = 0; i < manifold.count; ++i)
+    appendContact(shapeA, shapeB, manifold.points[i], manifold.normal);
 }
 
 // Inline: the detection loop calls it for every pair of two circles.
@@ -326,10 +330,7 @@ void Simulator::addCirclePairs(std::span<const CirclePair> pairs) {
                                     {pair.centreBx, pair.centreBy}, pair.radiusB, pair.margin,
                                     normal, p))
       continue;
-    const Shape& a = shapes_[pair.shapeA];
-    const Shape& b = shapes_[pair.shapeB];
-    contacts.items_.push_back({a.object, b.object, a.primitive, b.primitive, a.body, b.body,
-                               pair.shapeA, pair.shapeB, p.feature, p.point, normal, p.depth, 0});
+    appendContact(pair.shapeA, pair.shapeB, p, normal);
   }
 }
 
