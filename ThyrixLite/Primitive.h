@@ -92,20 +92,26 @@ class Primitive : public PhysicalObject {
     addPrimitive(*this);
   }
 
-  TactileSensors tactile_;  ///< set up by the shape classes
-
  private:
   friend class Simulator;  // clears and finishes the sensors around each solve
 
-  ShapeType shapeType_;
-  real radius_;
-  real halfLength_;
+  // First, next to each other and to tactile_'s vector: what the simulator reads from every
+  // part of a composed body in every step (a chain's 1000 links are 1000 objects apart in
+  // memory: fewer cache lines per object, measured faster).
   PhysicalObject* owner_ = this;
-  Vector2 localPosition_;
-  real localAngle_ = 0;
   bool rigid_ = true;
+  ShapeType shapeType_;
   Vector2 direction_{1, 0};  // (cos, sin) of directionAngle_
   real directionAngle_ = 0;
+
+ protected:
+  TactileSensors tactile_;  ///< set up by the shape classes
+
+ private:
+  real radius_;
+  real halfLength_;
+  Vector2 localPosition_;
+  real localAngle_ = 0;
 };
 
 }  // namespace thyrix

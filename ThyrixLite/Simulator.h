@@ -171,6 +171,9 @@ class Simulator : public World {
   /// updateGeometry for a body that changed (its collision filters with @p newFilters), or
   /// that has several shapes (whose poses are then compared one by one).
   void updateBody(std::uint32_t index, bool changed, bool newFilters);
+  /// updateBody's loop over the shapes of a body that is not its one primitive (@p known:
+  /// detected before, as of the start of updateBody).
+  void updateComposedBody(const BodyState& state, bool changed, bool known);
   void addCachedBox(std::uint32_t shape, Vector2& boxMin, Vector2& boxMax) const;
   bool updateShape(std::uint32_t shape, bool poseKnown, bool standalone, Vector2& lower,
                    Vector2& upper);

@@ -115,8 +115,10 @@ inline bool Simulator::updateShape(std::uint32_t s, bool poseKnown, bool standal
 // several shapes.
 #if defined(__GNUC__)
 #define THYRIX_FORCE_INLINE [[gnu::always_inline]] inline
+#define THYRIX_NO_INLINE [[gnu::noinline]]
 #else
 #define THYRIX_FORCE_INLINE inline
+#define THYRIX_NO_INLINE
 #endif
 THYRIX_FORCE_INLINE void Simulator::updateBody(std::uint32_t index, bool changed, bool newFilters) {
   BodyState& state = bodyStates_[index];
@@ -158,17 +160,36 @@ THYRIX_FORCE_INLINE void Simulator::updateBody(std::uint32_t index, bool changed
     state.restsCheaply = geometry_[s].travel == 0;
     return;
   }
+  updateComposedBody(state, changed, known);
+}
+
+// Out of line: the loop over a composed body's shapes (a chain's 1000 links) gets the
+// registers to itself, with the arrays' addresses loaded once (measured: inlined, it reloaded
+// them after every store of a flag and spilled the body box).
+THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool changed,
+                                                    bool known) {
+  const Shape* const shapes = shapes_.data();
+  ShapePose* const poses = shapePoses_.data();
+  ShapeGeometry* const geometry = geometry_.data();
+  const std::uint32_t* const slots = gridSlot_.data();
+  BoundingBox* const gridBoxes = gridBoxes_.data();
+  std::uint64_t* const movedBits = gridMovedBits_.data();
+  std::uint8_t* const shapeMoved = shapeMoved_.data();
+  const real travelFactor = geometryTravel_;
+  Vector2 boxMin{realMax, realMax};
+  Vector2 boxMax{-realMax, -realMax};
   // Once a shape has moved the body box is rebuilt, from every shape in order: those
   // before the first moved one are added then, the unmoved ones after it as they come.
   // A body none of whose shapes moved keeps its box and reads no shape's geometry.
   bool anyMoved = changed;
   const std::uint32_t end = state.firstShape + state.shapeCount;
   for (std::uint32_t s = state.firstShape; s < end; ++s) {
-    Primitive& primitive = *shapes_[s].primitive;
+    Primitive& primitive = *shapes[s].primitive;
     if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
-    const ShapePose& pose = shapePoses_[s];
+    ShapePose& pose = poses[s];
+    ShapeGeometry& g = geometry[s];
     const bool moved = changed || !sameBits(primitive.r, pose.r) ||
-                       !sameBits(primitive.alpha, pose.alpha) || geometry_[s].travel != 0;
+                       !sameBits(primitive.alpha, pose.alpha) || g.travel != 0;
     if (!moved) {  // (its shapeMoved_ entry is 0 since the start of the detection)
       if (anyMoved) addCachedBox(s, boxMin, boxMax);
       continue;
@@ -178,14 +199,50 @@ THYRIX_FORCE_INLINE void Simulator::updateBody(std::uint32_t index, bool changed
       for (std::uint32_t t = state.firstShape; t < s; ++t) addCachedBox(t, boxMin, boxMax);
     anyMoved = true;
     primitive.followOwner();
-    if (updateShape(s, known, false, lower, upper)) include(boxMin, boxMax, lower, upper);
+    if (shapes[s].type != ShapeType::Capsule) {  // a circle (or a border): the general case
+      Vector2 lower;
+      Vector2 upper;
+      if (updateShape(s, known, false, lower, upper)) include(boxMin, boxMax, lower, upper);
+      continue;
+    }
+    // A capsule, exactly as updateShape computes it (its common case in a chain).
+    const Vector2 r = primitive.r;
+    const real alpha = primitive.alpha;
+    const Vector2 last0 = g.p0;
+    const Vector2 last1 = g.p1;
+    if (!known || !sameBits(alpha, pose.alpha)) pose.axis = primitive.direction() * pose.halfLength;
+    const Vector2 p0 = r - pose.axis;
+    const Vector2 p1 = r + pose.axis;
+    g.p0 = p0;
+    g.p1 = p1;
+    pose.r = r;
+    pose.alpha = alpha;
+    const Vector2 least{std::min(p0.x, p1.x), std::min(p0.y, p1.y)};
+    const Vector2 most{std::max(p0.x, p1.x), std::max(p0.y, p1.y)};
+    const Vector2 radius{g.radius, g.radius};
+    include(boxMin, boxMax, least - radius, most + radius);
+    const std::uint32_t slot = slots[s];
+    movedBits[slot / 64] |= std::uint64_t{1} << (slot % 64);
+    real travel = 0;
+    if (known) {
+      const Vector2 d0 = p0 - last0;
+      const Vector2 d1 = p1 - last1;
+      const real displacement =
+          std::max(std::abs(d0.x) + std::abs(d0.y), std::abs(d1.x) + std::abs(d1.y));
+      travel = std::min(travelFactor * displacement, g.radius);
+    }
+    g.travel = travel;
+    const real widening = g.radius + g.margin + travel;
+    const Vector2 reach{widening, widening};
+    gridBoxes[slot] = {least - reach, most + reach};
   }
   if (!anyMoved) return;
-  body.boxMin = boxMin;
-  body.boxMax = boxMax;
+  state.object->boxMin = boxMin;
+  state.object->boxMax = boxMax;
 }
 
 #undef THYRIX_FORCE_INLINE
+#undef THYRIX_NO_INLINE
 
 void Simulator::updateGeometry() {
   // A new margin changes every shape's geometry; without rest skipping nothing is kept.
