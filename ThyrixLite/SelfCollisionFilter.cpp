@@ -23,6 +23,12 @@ void SelfCollisionFilter::assign(std::span<const std::uint32_t> partOf,
     apart_[fill[a]++] = b;
     apart_[fill[b]++] = a;
   }
+  const std::size_t count = partOf_.size();
+  apartNear_.assign(count, 0);
+  for (std::size_t k = 0; k < count; ++k)
+    for (std::size_t d = 1; d <= nearRange && k + d < count; ++d)
+      if (!listedPartsMayTouch(partOf_[k], partOf_[k + d]))
+        apartNear_[k] |= std::uint64_t{1} << (d - 1);
 }
 
 }  // namespace thyrix

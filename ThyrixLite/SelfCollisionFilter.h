@@ -3,6 +3,7 @@
 /// @brief Which primitives of one multi-body object may touch each other, as a table the
 /// simulator reads inline for every candidate pair (no virtual call per pair).
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -33,6 +34,11 @@ class SelfCollisionFilter {
   /// Whether the object's primitives number @p a and @p b (in `primitives()` order) may touch.
   [[nodiscard]] bool mayTouch(std::size_t a, std::size_t b) const {
     if (partOf_.empty()) return a != b;
+    // Primitives near each other in the order (a chain's neighbouring links, the pairs asked
+    // about in every step) are answered by one bit; the others by their parts' lists.
+    const std::size_t low = std::min(a, b);
+    const std::size_t gap = std::max(a, b) - low;
+    if (gap - 1 < nearRange) return ((apartNear_[low] >> (gap - 1)) & 1) == 0;
     // assign() gave every part of a primitive its list: no range check.
     return listedPartsMayTouch(partOf_[a], partOf_[b]);
   }
@@ -58,7 +64,12 @@ class SelfCollisionFilter {
     return true;
   }
 
-  std::vector<std::uint32_t> partOf_;      // per primitive
+  /// How far apart in the order two primitives may be for apartNear_ to answer.
+  static constexpr std::size_t nearRange = 64;
+  std::vector<std::uint32_t> partOf_;  // per primitive
+  // Per primitive k, bit d - 1 set when k and k + d (d = 1 to nearRange) never touch: what
+  // listedPartsMayTouch() says of their parts, read with one load.
+  std::vector<std::uint64_t> apartNear_;
   std::vector<std::uint32_t> apartStart_;  // per part + 1: where its list in apart_ begins
   std::vector<std::uint32_t> apart_;       // per part, the parts it never touches
 };

@@ -51,5 +51,32 @@ TEST(SelfCollisionFilter, PartsAndPairsDeclaredApart) {
   EXPECT_FALSE(filter.mayTouch(0, 1));
 }
 
+TEST(SelfCollisionFilter, NearAndFarPrimitivesAgreeWithTheParts) {
+  // A chain of 150 parts, one primitive each after a base of three (part 0), each link apart
+  // from its parent, plus links 10 and 120 declared apart (far apart in the order, past the
+  // near bits) and 5 and 70 (just past them). Every pair, near or far, in both orders, agrees
+  // with partsMayTouch() on their parts.
+  std::vector<std::uint32_t> parts{0, 0, 0};
+  Apart apart;
+  for (std::uint32_t p = 1; p <= 150; ++p) {
+    parts.push_back(p);
+    apart.emplace_back(p, p - 1);
+  }
+  apart.emplace_back(11, 121);
+  apart.emplace_back(6, 71);
+  SelfCollisionFilter filter;
+  filter.assign(parts, apart);
+  for (std::size_t a = 0; a < parts.size(); ++a)
+    for (std::size_t b = 0; b < parts.size(); ++b)
+      ASSERT_EQ(filter.mayTouch(a, b), filter.partsMayTouch(parts[a], parts[b])) << a << ", " << b;
+  EXPECT_FALSE(filter.mayTouch(13, 123));  // links 10 and 120: primitives 13 and 123
+  EXPECT_FALSE(filter.mayTouch(73, 8));
+  EXPECT_TRUE(filter.mayTouch(13, 124));
+  EXPECT_FALSE(filter.mayTouch(40, 41));
+  EXPECT_TRUE(filter.mayTouch(40, 42));
+  EXPECT_FALSE(filter.mayTouch(1, 2));  // the base's own
+  EXPECT_FALSE(filter.mayTouch(2, 3));  // the base and link 0
+}
+
 }  // namespace
 }  // namespace thyrix
