@@ -290,13 +290,18 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
     // A capsule, exactly as updateShape computes it (its common case in a chain).
     const Vector2 r = primitive.r;
     const real alpha = primitive.alpha;
-    if (!known || !sameBits(alpha, pose.alpha)) pose.axis = primitive.direction() * pose.halfLength;
+    // The half axis kept in a register: read back from pose, it waited for its own store.
+    Vector2 axis = pose.axis;
+    if (!known || !sameBits(alpha, pose.alpha)) {
+      axis = primitive.direction() * pose.halfLength;
+      pose.axis = axis;
+    }
     const std::uint32_t slot = slots[s];
     movedBits[slot / 64] |= std::uint64_t{1} << (slot % 64);
     pose.r = r;
     pose.alpha = alpha;
-    capsuleGeometry<real>(r, pose.axis, g.p0, g.p1, g.radius, g.margin, g.travel, travelFactor,
-                          known, gridBoxes[slot], boxMin, boxMax);
+    capsuleGeometry<real>(r, axis, g.p0, g.p1, g.radius, g.margin, g.travel, travelFactor, known,
+                          gridBoxes[slot], boxMin, boxMax);
   }
   if (!anyMoved) return;
   state.object->boxMin = boxMin;
