@@ -35,7 +35,7 @@ Vector2 CappedRectangle::endPoint(int end) const {
 }
 
 void CappedRectangle::setTactileSensors(int perSide, int perCap, real saturation) {
-  tactile_ = TactileSensors::cappedRectangle(perSide, perCap, saturation);
+  installTactileSensors(TactileSensors::cappedRectangle(perSide, perCap, saturation));
 }
 
 void CappedRectangle::draw(GUI& gui) const {

@@ -19,7 +19,7 @@ Circle::Circle(real radius, real mass)
                 mass * radius * radius / 2) {}
 
 void Circle::setTactileSensors(int count, real startAngle, real saturation) {
-  tactile_ = TactileSensors::circle(count, startAngle, saturation);
+  installTactileSensors(TactileSensors::circle(count, startAngle, saturation));
 }
 
 void Circle::draw(GUI& gui) const { gui.drawCircle(r, radius(), alpha, color, outlineColor); }

@@ -43,6 +43,13 @@ class PhysicalObject : public GraphicalObject {
   Vector2 r;           ///< position of the centre of mass, world coordinates (m)
   real alpha = 0;      ///< orientation (rad, counter-clockwise)
   bool fixed = false;  ///< a fixed object never moves: it has infinite mass
+
+ protected:
+  // A primitive with tactile sensors (set by Primitive): the simulator notes such primitives
+  // as it reads their pose, from the same cache line (in what is otherwise padding).
+  bool sensing_ = false;
+
+ public:
   /// Objects sharing a non-zero group never touch each other (the bodies of one agent, say);
   /// group 0 touches everything.
   std::uint32_t collisionGroup = 0;

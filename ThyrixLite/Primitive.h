@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 namespace thyrix {
 
@@ -105,9 +106,14 @@ class Primitive : public PhysicalObject {
   real directionAngle_ = 0;
 
  protected:
-  TactileSensors tactile_;  ///< set up by the shape classes
+  /// Gives the primitive @p sensors (the shape classes set them up; none by default).
+  void installTactileSensors(TactileSensors sensors) {
+    tactile_ = std::move(sensors);
+    sensing_ = tactile_.enabled();
+  }
 
  private:
+  TactileSensors tactile_;
   real radius_;
   real halfLength_;
   Vector2 localPosition_;

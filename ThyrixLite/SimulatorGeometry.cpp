@@ -231,7 +231,7 @@ THYRIX_FORCE_INLINE void Simulator::updateBody(std::uint32_t index, bool changed
   if (state.standalone) {  // a primitive of its own: its pose is the body's (common case)
     const std::uint32_t s = state.firstShape;
     auto& primitive = static_cast<Primitive&>(body);  // the body is its one primitive
-    if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
+    if (primitive.sensing_) sensingPrimitives_.push_back(&primitive);
     // A shape that travelled in the last step has a wider margin, narrowed when it stops.
     if (!changed && geometry_[s].travel == 0) return;
     shapeMoved[s] = 1;
@@ -267,7 +267,7 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
   const std::uint32_t end = state.firstShape + state.shapeCount;
   for (std::uint32_t s = state.firstShape; s < end; ++s) {
     Primitive& primitive = *shapes[s].primitive;
-    if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
+    if (primitive.sensing_) sensingPrimitives_.push_back(&primitive);
     ShapePose& pose = poses[s];
     ShapeGeometry& g = geometry[s];
     const bool moved = changed || !sameBits(primitive.r, pose.r) ||
@@ -354,7 +354,7 @@ void Simulator::updateGeometry() {
     // but note its sensors (in any order: each sensing primitive is reset and read alone).
     if (state.standalone) {
       auto& primitive = static_cast<Primitive&>(body);
-      if (primitive.tactile_.enabled()) sensingPrimitives_.push_back(&primitive);
+      if (primitive.sensing_) sensingPrimitives_.push_back(&primitive);
     }
   }
   // The bodies that changed, or whose several shapes are compared one by one, in their own

@@ -215,8 +215,8 @@ void Simulator::updateTactileSensors() {
   for (Primitive* primitive : sensingPrimitives_) primitive->tactile_.clear();
   for (const GlobalContactInfo& c : contacts.items_) {
     if (c.force <= 0) continue;
-    if (c.primitiveA->tactile_.enabled()) c.primitiveA->touch(c.point, c.force);
-    if (c.primitiveB->tactile_.enabled()) c.primitiveB->touch(c.point, c.force);
+    if (c.primitiveA->sensing_) c.primitiveA->touch(c.point, c.force);
+    if (c.primitiveB->sensing_) c.primitiveB->touch(c.point, c.force);
   }
   for (Primitive* primitive : sensingPrimitives_) primitive->tactile_.finish();
 }

@@ -44,6 +44,26 @@ TEST(TactileSensors, ContactLightsExactlyTheSectorUnderIt) {
   for (int k = 0; k < 8; ++k) EXPECT_NEAR(a[k], k == 6 ? real(0.3) : real(0), loose) << k;
 }
 
+TEST(TactileSensors, SensorsGivenToABodyAlreadyAtRestFeelFromTheNextStep) {
+  // The simulator notes sensing primitives as it reads their poses, from a flag the sensors'
+  // setter keeps: a circle resting for a while, then given sensors, feels the floor at once.
+  Simulator simulator;
+  simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
+  auto& circle = simulator.registerObject(std::make_unique<Circle>(real(0.5), real(1)));
+  circle.r = {0, real(0.5)};
+  for (int step = 0; step < 5; ++step) {
+    circle.externalForce = {0, -3};
+    simulator.advanceTime();
+  }
+  EXPECT_TRUE(circle.tactileActivations().empty());
+  circle.setTactileSensors(8, 0, 10);
+  circle.externalForce = {0, -3};
+  simulator.advanceTime();
+  const auto a = circle.tactileActivations();
+  ASSERT_EQ(a.size(), 8u);
+  EXPECT_NEAR(a[6], real(0.3), loose);
+}
+
 TEST(TactileSensors, ActivationSaturatesAtOne) {
   CircleOnFloor scene(4, 0, 2, 0);
   scene.press(5);                                       // force 5 > saturation 2
