@@ -101,8 +101,8 @@ class OverlapTest {
  public:
   explicit OverlapTest(const BoundingBox& box) : box_(box) {}
   std::size_t operator()(const BoundingBox& o) const {
-    return std::size_t{(box_.lower.x <= o.upper.x) & (o.lower.x <= box_.upper.x) &
-                       (box_.lower.y <= o.upper.y) & (o.lower.y <= box_.upper.y)};
+    return static_cast<std::size_t>((box_.lower.x <= o.upper.x) & (o.lower.x <= box_.upper.x) &
+                                    (box_.lower.y <= o.upper.y) & (o.lower.y <= box_.upper.y));
   }
 
  private:
@@ -271,10 +271,10 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
   // box itself, as a cell lists its boxes by index), then the cells (x+1, y-1), (x+1, y),
   // (x+1, y+1), then (x, y+1), each by increasing index.
   // Whether a candidate overlaps is random to the branch predictor: each candidate pair is
-  // written at the end of the output and kept (the end advanced) when it overlaps, without a
-  // branch. The output is therefore sized ahead, for every candidate of the box at hand.
-  // The candidates go to candidates_, which only grows (the caller's cleared output would be
-  // zero-filled when sized ahead, every call), then the pairs kept to the output.
+  // written at the end of the candidates buffer and kept (the end advanced) when it overlaps,
+  // without a branch. The buffer is therefore sized ahead, for every candidate of the box at
+  // hand: candidates_, which only grows (the caller's cleared output would be zero-filled
+  // when sized ahead, every call); the pairs kept are then copied to the output.
   std::size_t n = 0;
   if (candidates_.size() < 2 * std::size_t{count} + 64)
     candidates_.resize(2 * std::size_t{count} + 64);

@@ -102,12 +102,14 @@ class BroadPhase {
   std::uint32_t reservedCount_ = 0;          // box count the grid buffers are sized for
   std::vector<std::uint32_t> cellOfBox_;     // cell (dense) or bucket (hashed) of each box
   std::vector<std::int64_t> cellX_, cellY_;  // integer cell coordinates of each regular box
-  std::vector<std::uint32_t> cellStart_;     // counting-sort offsets, one per cell/bucket + 1
-  std::vector<std::uint32_t> cellCursor_;    // fill position of each bucket during the sort
-  std::vector<std::uint32_t> sortedBoxes_;   // regular boxes grouped by cell, by index within
-  std::vector<std::uint32_t> oversized_;     // boxes larger than a cell
-  std::vector<std::uint32_t> slotOfBox_;     // position of each box in sortedBoxes_ (dense)
-  std::vector<BoxPair> candidates_;          // the dense grid's candidate pairs (only grows)
+  // Counting-sort offsets: one per bucket + 1 (hashed grid); one per cell + 2 in the dense
+  // grid, which counts one entry late so that the fill's cursors are the offsets themselves.
+  std::vector<std::uint32_t> cellStart_;
+  std::vector<std::uint32_t> cellCursor_;   // fill position of each bucket during the sort
+  std::vector<std::uint32_t> sortedBoxes_;  // regular boxes grouped by cell, by index within
+  std::vector<std::uint32_t> oversized_;    // boxes larger than a cell
+  std::vector<std::uint32_t> slotOfBox_;    // position of each box in sortedBoxes_ (dense)
+  std::vector<BoxPair> candidates_;         // the dense grid's candidate pairs (only grows)
 
   SweepAndPrune sweep_;        // boxes along a line
   bool lastTookGrid_ = false;  // the last call of more than smallCount boxes used the grid

@@ -12,12 +12,12 @@ namespace {
 
 static_assert(BroadPhase::smallCount <= 64, "few boxes keep their overlaps in 64-bit masks");
 
+#if defined(__SSE2__)
 /// Bits 0 to count - 1.
 std::uint64_t lowBits(std::uint32_t count) {
   return count >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
 }
 
-#if defined(__SSE2__)
 /// The SSE2 instructions of one precision: two doubles or four floats to a register.
 template <class Real>
 struct Sse;

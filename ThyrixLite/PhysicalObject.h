@@ -44,9 +44,10 @@ class PhysicalObject : public GraphicalObject {
   real alpha = 0;      ///< orientation (rad, counter-clockwise)
   bool fixed = false;  ///< a fixed object never moves: it has infinite mass
 
- protected:
-  // A primitive with tactile sensors (set by Primitive): the simulator notes such primitives
-  // as it reads their pose, from the same cache line (in what is otherwise padding).
+ private:
+  // True for a primitive with tactile sensors, kept by Primitive::installTactileSensors alone
+  // (private: a subclass cannot make it disagree with the sensors). The simulator notes such
+  // primitives as it reads their pose, from the same cache line (in what is otherwise padding).
   bool sensing_ = false;
 
  public:
@@ -163,6 +164,7 @@ class PhysicalObject : public GraphicalObject {
 
   friend class World;
   friend class Simulator;
+  friend class Primitive;  // keeps sensing_
   std::vector<Primitive*> primitives_;
   std::vector<std::unique_ptr<PhysicalObject>> subBodies_;  // handed to the world on registration
 };

@@ -96,9 +96,9 @@ class Primitive : public PhysicalObject {
  private:
   friend class Simulator;  // clears and finishes the sensors around each solve
 
-  // First, next to each other and to tactile_'s vector: what the simulator reads from every
-  // part of a composed body in every step (a chain's 1000 links are 1000 objects apart in
-  // memory: fewer cache lines per object, measured faster).
+  // First, next to each other: what the simulator reads from every part of a composed body
+  // in every step (a chain's 1000 links are 1000 objects apart in memory: fewer cache lines
+  // per object, measured faster). The sensors are read only when sensing_ says so.
   PhysicalObject* owner_ = this;
   bool rigid_ = true;
   ShapeType shapeType_;

@@ -119,8 +119,8 @@ void Simulator::reserveContacts(std::size_t count) {
   contacts.items_.reserve(count);
   previousContacts_.reserve(count);  // the two swap at each step
   previousOrder_.reserve(count);
-  previousPairs_.reserve(count);
-  previousKeys_.reserve(count);
+  previousSortedKeys_.reserve(count);
+  previousListKeys_.reserve(count);
   objectContacts_.reserve(2 * count);
   pairs_.reserve(count);
   rows_.reserve(count);

@@ -175,8 +175,12 @@ class Simulator : public World {
   /// detected before, as of the start of updateBody).
   void updateComposedBody(const BodyState& state, bool changed, bool known);
   void addCachedBox(std::uint32_t shape, Vector2& boxMin, Vector2& boxMax) const;
-  bool updateShape(std::uint32_t shape, bool poseKnown, bool standalone, Vector2& lower,
-                   Vector2& upper);
+  void updateShape(std::uint32_t shape, bool poseKnown, bool standalone, Vector2& boxMin,
+                   Vector2& boxMax);
+  /// updateShape for a capsule, @p primitive its primitive (also called by
+  /// updateComposedBody's loop, with the arrays it holds).
+  void updateCapsule(std::uint32_t shape, Primitive& primitive, ShapePose& pose,
+                     ShapeGeometry& geometry, bool poseKnown, Vector2& boxMin, Vector2& boxMax);
   void findBorderContacts(bool reuse);
   /// Border @p k's reach bits over @p words words of shapes: every shape's retested if the
   /// border moved, else the moved shapes'.
@@ -262,15 +266,15 @@ class Simulator : public World {
   std::vector<GlobalContactInfo> previousContacts_;  // the last detection's contacts
   std::vector<std::uint32_t> previousStart_;         // counting sort by shape A: offsets
   std::vector<std::uint32_t> previousOrder_;         // by shape A (then B if many): positions
-  std::vector<std::uint64_t> previousPairs_;         // each previousOrder_ entry's shapes, A then B
-  std::vector<std::uint64_t> previousKeys_;  // indexPreviousContacts: the pairs in list order
-  std::size_t previousCursor_ = 0;           // previousOrder_ after the last pair found
-  std::size_t previousHint_ = 0;             // the warm start's next guess
+  std::vector<std::uint64_t> previousSortedKeys_;    // each previousOrder_ entry's shapes, A then B
+  std::vector<std::uint64_t> previousListKeys_;  // indexPreviousContacts: the pairs in list order
+  std::size_t previousCursor_ = 0;               // previousOrder_ after the last pair found
+  std::size_t previousHint_ = 0;                 // the warm start's next guess
   real geometryFraction_ = 0;      // speculativeFraction the cached margins were computed with
   real geometryTravel_ = 0;        // speculativeTravel the cached travels were computed with
   bool contactsComplete_ = false;  // `contacts` holds exactly one detection's contacts
   bool previousValid_ = false;     // previousContacts_ is the last detection's, complete
-  bool previousIndexed_ = false;   // previousOrder_ and previousPairs_ are up to date
+  bool previousIndexed_ = false;   // previousOrder_ and previousSortedKeys_ are up to date
   bool contactsSolved_ = false;    // the solver wrote the forces of `contacts`
   bool previousSolved_ = false;    // previousContacts_ carries its solve's forces (warm start)
   // The objects that do not keep PhysicalObject's step hooks, in registration order (the

@@ -119,6 +119,8 @@ std::uint64_t reachesBehind(const BorderLine& line, Vector2 centre, Vector2 half
 /// (Double only: a float build keeps the plain loop.)
 template <std::size_t Borders>
 void reachFullWord(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t* reach) {
+  static_assert(std::is_standard_layout_v<BoundingBox> && sizeof(BoundingBox) == 4 * sizeof(real),
+                "the boxes are read as arrays of four coordinates");
   const auto* const corners = reinterpret_cast<const double*>(boxes);  // lower x, y, upper x, y
   const __m128d half = _mm_set1_pd(0.5);
   const __m128d zero = _mm_setzero_pd();
@@ -155,7 +157,8 @@ void reachFullWord(const BorderLine* lines, const BoundingBox* boxes, std::uint6
 
 /// Sets in @p reach (one word per border of @p lines) the bits of @p retest whose boxes (from
 /// @p boxes, the word's first) reach behind each border. A whole word of moved shapes (a crowd
-/// in motion) is a plain loop over its 64 boxes, without the walk over its bits.
+/// in motion) is tested without the walk over its bits: two boxes at a time with SSE2 in
+/// double (reachFullWord), else a plain loop over its 64 boxes.
 template <std::size_t Borders>
 void reachWord(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t retest,
                std::uint64_t* reach) {

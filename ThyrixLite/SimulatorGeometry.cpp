@@ -35,6 +35,8 @@ void include(Vector2& boxMin, Vector2& boxMax, Vector2 lower, Vector2 upper) {
 #if defined(__SSE2__)
 // A Vector2 as the pair of doubles it holds (x first: the address of a standard-layout struct
 // is its first member's). Templates, so that a float build never instantiates them.
+static_assert(std::is_standard_layout_v<Vector2> && sizeof(Vector2) == 2 * sizeof(real),
+              "SSE2 reads a Vector2 as its two coordinates");
 template <class Real>
 __m128d loadPair(const Vector2& v) {
   return _mm_loadu_pd(reinterpret_cast<const Real*>(&v));
@@ -123,55 +125,79 @@ inline void Simulator::addCachedBox(std::uint32_t s, Vector2& boxMin, Vector2& b
           Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} + radius);
 }
 
-// Recomputes shape @p s's geometry and grid box; sets @p lower and @p upper to its box without
-// margin (what the body box is the union of) and returns true, or returns false for a
-// half-plane (unbounded: no box).
+// Forced inlining where GCC kept a call (measured), and an out-of-line loop (below).
+#if defined(__GNUC__)
+#define THYRIX_FORCE_INLINE [[gnu::always_inline]] inline
+#define THYRIX_NO_INLINE [[gnu::noinline]]
+#else
+#define THYRIX_FORCE_INLINE inline
+#define THYRIX_NO_INLINE
+#endif
+
+// Recomputes capsule @p s's geometry and grid box, and widens the body box (@p boxMin,
+// @p boxMax) by its box (the one computation of a capsule, for standalone capsules and the
+// parts of composed bodies alike).
+THYRIX_FORCE_INLINE void Simulator::updateCapsule(std::uint32_t s, Primitive& primitive,
+                                                  ShapePose& pose, ShapeGeometry& g, bool poseKnown,
+                                                  Vector2& boxMin, Vector2& boxMax) {
+  const Vector2 r = primitive.r;
+  const real alpha = primitive.alpha;
+  // The half axis turns with the angle only: a capsule that slides keeps it. Kept in a
+  // register: read back from the pose, it waited for its own store.
+  Vector2 axis = pose.axis;
+  if (!poseKnown || !sameBits(alpha, pose.alpha)) {
+    // direction() is cached by the primitive, or set by an owner that placed it with the
+    // (cos, sin) it already had (articulated links): no sine or cosine here then.
+    axis = primitive.direction() * pose.halfLength;
+    pose.axis = axis;
+  }
+  const std::uint32_t slot = gridSlot_[s];
+  gridMovedBits_[slot / 64] |= std::uint64_t{1} << (slot % 64);
+  pose.r = r;
+  pose.alpha = alpha;
+  capsuleGeometry<real>(r, axis, g.p0, g.p1, g.radius, g.margin, g.travel, geometryTravel_,
+                        poseKnown, gridBoxes_[slot], boxMin, boxMax);
+}
+
+// Recomputes shape @p s's geometry and grid box, and widens the body box (@p boxMin,
+// @p boxMax) by its box without margin; a half-plane is unbounded: no box, not in the grid.
 // Radius and margin are not recomputed: they are in geometry_ since registration (the margin
 // since the last change of the fraction), and the half length is in shapePoses_.
 // With @p standalone (the shape is its body) a circle's pose is not noted: only a composed
 // body's shapes (compared one by one) and capsules (their axis) read it.
-inline bool Simulator::updateShape(std::uint32_t s, bool poseKnown, bool standalone, Vector2& lower,
-                                   Vector2& upper) {
+inline void Simulator::updateShape(std::uint32_t s, bool poseKnown, bool standalone,
+                                   Vector2& boxMin, Vector2& boxMax) {
   Primitive& primitive = *shapes_[s].primitive;
   ShapePose& pose = shapePoses_[s];
   ShapeGeometry& g = geometry_[s];
-  const ShapeType type = shapes_[s].type;
   const Vector2 r = primitive.r;
   const real alpha = primitive.alpha;
-  const Vector2 last0 = g.p0;
-  const Vector2 last1 = g.p1;
-  switch (type) {
+  switch (shapes_[s].type) {
     case ShapeType::HalfPlane:
       g.p0 = r;
       g.p1 = static_cast<const Border&>(primitive).normal();
       pose.r = r;
       pose.alpha = alpha;
-      return false;  // unbounded: no box, not in the grid
-    case ShapeType::Circle:
-      g.p0 = r;  // a circle's geometry does not depend on its angle
-      g.p1 = r;  // the box below and addCachedBox's are then the capsule's (equal ends)
-      if (!standalone) {
-        pose.r = r;
-        pose.alpha = alpha;
-      }
-      break;
+      return;
     case ShapeType::Capsule:
-      // The half axis turns with the angle only: a capsule that slides keeps it.
-      if (!poseKnown || !sameBits(alpha, pose.alpha))
-        // direction() is cached by the primitive, or set by an owner that placed it with
-        // the (cos, sin) it already had (articulated links): no sine or cosine here then.
-        pose.axis = primitive.direction() * pose.halfLength;
-      g.p0 = r - pose.axis;
-      g.p1 = r + pose.axis;
-      pose.r = r;
-      pose.alpha = alpha;
+      updateCapsule(s, primitive, pose, g, poseKnown, boxMin, boxMax);
+      return;
+    case ShapeType::Circle:
       break;
   }
-  // The same boxes as before for a circle: min and max of two equal values are that value.
+  // A circle: its geometry does not depend on its angle. Its axis is its centre twice, so
+  // that addCachedBox reads its box as a capsule's (min and max of equal values).
+  const Vector2 last0 = g.p0;
+  const Vector2 last1 = g.p1;
+  g.p0 = r;
+  g.p1 = r;
+  if (!standalone) {
+    pose.r = r;
+    pose.alpha = alpha;
+  }
   const Vector2 least{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)};
   const Vector2 most{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)};
-  lower = least - Vector2{g.radius, g.radius};
-  upper = most + Vector2{g.radius, g.radius};
+  include(boxMin, boxMax, least - Vector2{g.radius, g.radius}, most + Vector2{g.radius, g.radius});
   const std::uint32_t slot = gridSlot_[s];
   gridMovedBits_[slot / 64] |= std::uint64_t{1} << (slot % 64);
   // How far the shape went in the last step, a bound on how far it goes in this one if it
@@ -189,19 +215,11 @@ inline bool Simulator::updateShape(std::uint32_t s, bool poseKnown, bool standal
   const real widening = g.radius + g.margin + g.travel;
   const Vector2 reach{widening, widening};
   gridBoxes_[slot] = {least - reach, most + reach};
-  return true;
 }
 
 // Inline (forced: GCC kept a call, which cost a pile of moving bodies 1% more instructions):
 // called from updateGeometry, the only caller, for the bodies that changed or that have
 // several shapes.
-#if defined(__GNUC__)
-#define THYRIX_FORCE_INLINE [[gnu::always_inline]] inline
-#define THYRIX_NO_INLINE [[gnu::noinline]]
-#else
-#define THYRIX_FORCE_INLINE inline
-#define THYRIX_NO_INLINE
-#endif
 THYRIX_FORCE_INLINE void Simulator::updateBody(std::uint32_t index, bool changed, bool newFilters) {
   BodyState& state = bodyStates_[index];
   PhysicalObject& body = *state.object;
@@ -226,8 +244,6 @@ THYRIX_FORCE_INLINE void Simulator::updateBody(std::uint32_t index, bool changed
   // signed zeros come out as they always did), starting from the empty box.
   Vector2 boxMin{realMax, realMax};
   Vector2 boxMax{-realMax, -realMax};
-  Vector2 lower;
-  Vector2 upper;
   if (state.standalone) {  // a primitive of its own: its pose is the body's (common case)
     const std::uint32_t s = state.firstShape;
     auto& primitive = static_cast<Primitive&>(body);  // the body is its one primitive
@@ -235,7 +251,7 @@ THYRIX_FORCE_INLINE void Simulator::updateBody(std::uint32_t index, bool changed
     // A shape that travelled in the last step has a wider margin, narrowed when it stops.
     if (!changed && geometry_[s].travel == 0) return;
     shapeMoved[s] = 1;
-    if (updateShape(s, known, true, lower, upper)) include(boxMin, boxMax, lower, upper);
+    updateShape(s, known, true, boxMin, boxMax);
     body.boxMin = boxMin;
     body.boxMax = boxMax;
     // While it travels, the body is looked at in this loop even when its pose stays the same.
@@ -253,11 +269,7 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
   const Shape* const shapes = shapes_.data();
   ShapePose* const poses = shapePoses_.data();
   ShapeGeometry* const geometry = geometry_.data();
-  const std::uint32_t* const slots = gridSlot_.data();
-  BoundingBox* const gridBoxes = gridBoxes_.data();
-  std::uint64_t* const movedBits = gridMovedBits_.data();
   std::uint8_t* const shapeMoved = shapeMoved_.data();
-  const real travelFactor = geometryTravel_;
   Vector2 boxMin{realMax, realMax};
   Vector2 boxMax{-realMax, -realMax};
   // Once a shape has moved the body box is rebuilt, from every shape in order: those
@@ -281,27 +293,10 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
       for (std::uint32_t t = state.firstShape; t < s; ++t) addCachedBox(t, boxMin, boxMax);
     anyMoved = true;
     primitive.followOwner();
-    if (shapes[s].type != ShapeType::Capsule) {  // a circle (or a border): the general case
-      Vector2 lower;
-      Vector2 upper;
-      if (updateShape(s, known, false, lower, upper)) include(boxMin, boxMax, lower, upper);
-      continue;
-    }
-    // A capsule, exactly as updateShape computes it (its common case in a chain).
-    const Vector2 r = primitive.r;
-    const real alpha = primitive.alpha;
-    // The half axis kept in a register: read back from pose, it waited for its own store.
-    Vector2 axis = pose.axis;
-    if (!known || !sameBits(alpha, pose.alpha)) {
-      axis = primitive.direction() * pose.halfLength;
-      pose.axis = axis;
-    }
-    const std::uint32_t slot = slots[s];
-    movedBits[slot / 64] |= std::uint64_t{1} << (slot % 64);
-    pose.r = r;
-    pose.alpha = alpha;
-    capsuleGeometry<real>(r, axis, g.p0, g.p1, g.radius, g.margin, g.travel, travelFactor, known,
-                          gridBoxes[slot], boxMin, boxMax);
+    if (shapes[s].type == ShapeType::Capsule)  // (a chain's links: inline, its common case)
+      updateCapsule(s, primitive, pose, g, known, boxMin, boxMax);
+    else  // a circle (or a border)
+      updateShape(s, known, false, boxMin, boxMax);
   }
   if (!anyMoved) return;
   state.object->boxMin = boxMin;

@@ -26,27 +26,27 @@ void Simulator::indexPreviousContacts() {
   // crowd), whose search would otherwise be a long scan, is also sorted by shape B, for a
   // binary search. (A circle's few pairs come in no order: sorting them all cost a
   // mispredicted branch per contact, a third of the function.)
-  // The contacts are read once, their pairs copied to previousKeys_ for the second pass (a
+  // The contacts are read once, their pairs copied to previousListKeys_ for the second pass (a
   // contact is as long as a cache line and more: a second pass over them cost as much again).
   // Counts are kept one entry late, so that the fill's cursors are previousStart_ itself:
   // shape A's group is then previousStart_[A] to previousStart_[A + 1].
   const std::size_t count = previousContacts_.size();
   const std::size_t shapes = shapes_.size();
   previousStart_.assign(shapes + 2, 0);
-  previousKeys_.resize(count);
+  previousListKeys_.resize(count);
   std::uint32_t* const start = previousStart_.data();
   for (std::size_t k = 0; k < count; ++k) {
     const GlobalContactInfo& c = previousContacts_[k];
     ++start[c.shapeA + 2];
-    previousKeys_[k] = pairKey(c.shapeA, c.shapeB);
+    previousListKeys_[k] = pairKey(c.shapeA, c.shapeB);
   }
   for (std::size_t s = 0; s < shapes; ++s) start[s + 2] += start[s + 1];
   previousOrder_.resize(count);
-  previousPairs_.resize(count);
-  std::uint64_t* const pairs = previousPairs_.data();
+  previousSortedKeys_.resize(count);
+  std::uint64_t* const pairs = previousSortedKeys_.data();
   std::uint32_t* const order = previousOrder_.data();
   for (std::uint32_t k = 0; k < count; ++k) {
-    const std::uint64_t key = previousKeys_[k];
+    const std::uint64_t key = previousListKeys_[k];
     const std::uint32_t i = start[(key >> 32) + 1]++;
     order[i] = k;
     pairs[i] = key;
@@ -82,8 +82,8 @@ std::span<const std::uint32_t> Simulator::previousContactsOf(std::uint32_t shape
                                                              std::uint32_t shapeB) {
   if (!previousIndexed_) indexPreviousContacts();
   const std::uint64_t pair = pairKey(shapeA, shapeB);
-  const std::uint64_t* const pairs = previousPairs_.data();
-  const std::size_t count = previousPairs_.size();
+  const std::uint64_t* const pairs = previousSortedKeys_.data();
+  const std::size_t count = previousSortedKeys_.size();
   // Pairs come in nearly the last step's order (a border's with the shapes in order): the
   // pair's contacts usually begin where the last pair's ended (a pair's entries are
   // consecutive). Else a scan of shape A's group, or a binary search of a large one.

@@ -36,6 +36,35 @@ TEST(ComposedPhysicalObject, MassCentreAndInertiaFromTheParts) {
   EXPECT_NEAR(body.I, expected, tight);
 }
 
+TEST(ComposedPhysicalObject, OneCapsuleBodyGetsTheStandaloneCapsulesBoxesBitForBit) {
+  // A capsule on its own and the same capsule as the one part of a composed body go through
+  // the same computation (Simulator::updateCapsule): the same poses give the same body boxes,
+  // to the bit, as they move, turn and rest.
+  Simulator simulator;
+  auto& alone = simulator.registerObject(
+      std::make_unique<CappedRectangle>(real(0.7), real(0.2), real(1)));
+  auto composed = std::make_unique<ComposedPhysicalObject>();
+  composed->add(std::make_unique<CappedRectangle>(real(0.7), real(0.2), real(1)), {0, 0});
+  auto& body = simulator.registerObject(std::move(composed));
+  alone.collisionGroup = body.collisionGroup = 1;  // they overlap: never touching
+  const Vector2 start = body.r;
+  for (int step = 0; step < 12; ++step) {
+    // Moved by hand, turned every third step, at rest every fourth.
+    if (step % 4 != 3) {
+      body.r = start + Vector2{real(0.37) * real(step), real(-0.11) * real(step)};
+      if (step % 3 == 0) body.alpha = real(0.3) * real(step) + real(0.1);
+    }
+    alone.r = body.r;
+    alone.alpha = body.alpha;
+    simulator.advanceTime();
+    EXPECT_EQ(alone.boxMin.x, body.boxMin.x) << step;
+    EXPECT_EQ(alone.boxMin.y, body.boxMin.y) << step;
+    EXPECT_EQ(alone.boxMax.x, body.boxMax.x) << step;
+    EXPECT_EQ(alone.boxMax.y, body.boxMax.y) << step;
+    EXPECT_GT(alone.boxMax.x - alone.boxMin.x, real(0.4)) << step;  // a real box
+  }
+}
+
 TEST(ComposedPhysicalObject, PartsFollowTheBodyAndKeepTheirWorldPlaceWhenAdded) {
   ComposedPhysicalObject body;
   auto& first = body.add(std::make_unique<Circle>(real(0.5), real(1)), {0, 0});
