@@ -165,8 +165,8 @@ THYRIX_FORCE_INLINE void Simulator::updateCapsule(std::uint32_t s, Primitive& pr
 // since the last change of the fraction), and the half length is in shapePoses_.
 // With @p standalone (the shape is its body) a circle's pose is not noted: only a composed
 // body's shapes (compared one by one) and capsules (their axis) read it.
-inline void Simulator::updateShape(std::uint32_t s, bool poseKnown, bool standalone,
-                                   Vector2& boxMin, Vector2& boxMax) {
+THYRIX_FORCE_INLINE void Simulator::updateShape(std::uint32_t s, bool poseKnown, bool standalone,
+                                                Vector2& boxMin, Vector2& boxMax) {
   Primitive& primitive = *shapes_[s].primitive;
   ShapePose& pose = shapePoses_[s];
   ShapeGeometry& g = geometry_[s];
@@ -186,35 +186,30 @@ inline void Simulator::updateShape(std::uint32_t s, bool poseKnown, bool standal
       break;
   }
   // A circle: its geometry does not depend on its angle. Its axis is its centre twice, so
-  // that addCachedBox reads its box as a capsule's (min and max of equal values).
-  const Vector2 last0 = g.p0;
-  const Vector2 last1 = g.p1;
+  // that addCachedBox reads its box as a capsule's (min and max of equal values, which are
+  // that value, as are the capsule formulas below with both ends at the centre).
+  const Vector2 last = g.p0;
   g.p0 = r;
   g.p1 = r;
   if (!standalone) {
     pose.r = r;
     pose.alpha = alpha;
   }
-  const Vector2 least{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)};
-  const Vector2 most{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)};
-  include(boxMin, boxMax, least - Vector2{g.radius, g.radius}, most + Vector2{g.radius, g.radius});
+  include(boxMin, boxMax, r - Vector2{g.radius, g.radius}, r + Vector2{g.radius, g.radius});
   const std::uint32_t slot = gridSlot_[s];
   gridMovedBits_[slot / 64] |= std::uint64_t{1} << (slot % 64);
   // How far the shape went in the last step, a bound on how far it goes in this one if it
-  // keeps its speed: |dx| + |dy| of its axis's ends (no square root; at most 1.42 times the
-  // distance), capped at the radius (a shape moved by hand did not travel).
+  // keeps its speed: |dx| + |dy| (no square root; at most 1.42 times the distance), capped
+  // at the radius (a shape moved by hand did not travel).
   g.travel = 0;
   if (poseKnown) {
-    const Vector2 d0 = g.p0 - last0;
-    const Vector2 d1 = g.p1 - last1;
-    const real displacement =
-        std::max(std::abs(d0.x) + std::abs(d0.y), std::abs(d1.x) + std::abs(d1.y));
-    g.travel = std::min(geometryTravel_ * displacement, g.radius);
+    const Vector2 d = r - last;
+    g.travel = std::min(geometryTravel_ * (std::abs(d.x) + std::abs(d.y)), g.radius);
   }
   // The shape's own box (not the body's), widened by its speculative margin and travel.
   const real widening = g.radius + g.margin + g.travel;
   const Vector2 reach{widening, widening};
-  gridBoxes_[slot] = {least - reach, most + reach};
+  gridBoxes_[slot] = {r - reach, r + reach};
 }
 
 // Inline (forced: GCC kept a call, which cost a pile of moving bodies 1% more instructions):
