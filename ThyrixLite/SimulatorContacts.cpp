@@ -223,13 +223,7 @@ void Simulator::findBorderReach(std::size_t k, std::size_t words, bool borderMov
     const std::uint64_t retest = borderMoved ? wordMask(w, count) : gridMovedBits_[w];
     std::uint64_t& reach = borderReach_[k * words + w];
     reach &= ~retest;
-    for (std::uint64_t bits = retest; bits != 0; bits &= bits - 1) {
-      const BoundingBox& box =
-          gridBoxes_[64 * w + static_cast<std::size_t>(std::countr_zero(bits))];
-      if (reachesBehind(line, (box.lower + box.upper) * real(0.5),
-                        (box.upper - box.lower) * real(0.5)) != 0)
-        reach |= bits & (~bits + 1);
-    }
+    reachWord<1>(&line, gridBoxes_.data() + 64 * w, retest, &reach);
   }
 }
 

@@ -41,8 +41,8 @@ TEST(ComposedPhysicalObject, OneCapsuleBodyGetsTheStandaloneCapsulesBoxesBitForB
   // the same computation (Simulator::updateCapsule): the same poses give the same body boxes,
   // to the bit, as they move, turn and rest.
   Simulator simulator;
-  auto& alone = simulator.registerObject(
-      std::make_unique<CappedRectangle>(real(0.7), real(0.2), real(1)));
+  auto& alone =
+      simulator.registerObject(std::make_unique<CappedRectangle>(real(0.7), real(0.2), real(1)));
   auto composed = std::make_unique<ComposedPhysicalObject>();
   composed->add(std::make_unique<CappedRectangle>(real(0.7), real(0.2), real(1)), {0, 0});
   auto& body = simulator.registerObject(std::move(composed));
