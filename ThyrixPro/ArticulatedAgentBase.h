@@ -167,6 +167,20 @@ class ArticulatedAgentBase : public MultiBodyObject {
     wrench.y += force.x;
     wrench.z += force.y;
   }
+  /// The same as `applyLinkForce(b, force, centerOfMass(b))`, bit for bit while the pose is
+  /// finite (the lever arm is then (+0, +0), whose cross product with @p force is added as
+  /// applyLinkForce() adds it), without reading the pose: a weight on every link in every step.
+  /// @throws InvalidArgument naming "ArticulatedAgentBase.body" unless a body of this agent,
+  /// or ".force" unless finite
+  void applyLinkForceAtCenterOfMass(int b, Vector2 force) {
+    if (b < base || b >= linkCount() || !std::isfinite(force.x) || !std::isfinite(force.y))
+        [[unlikely]]
+      refuseLinkForce(b, force, Vector2{});
+    Vector3& wrench = linkWrenches_[index(b + 1)];
+    wrench.x += cross(Vector2{}, force);
+    wrench.y += force.x;
+    wrench.z += force.y;
+  }
 
   // --- proprioception and poses --------------------------------------------------------------
 

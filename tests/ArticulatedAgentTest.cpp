@@ -118,6 +118,47 @@ TEST_P(ArticulatedAgentTest, NoTorqueAndNoForceGiveNoMotion) {
   EXPECT_EQ(agent.omega, 0);
 }
 
+TEST_P(ArticulatedAgentTest, AForceAtTheCentreOfMassGivesTheBitsOfTheSameForceAtThatPoint) {
+  // Forces of every sign (signed zeros too: the torque is a zero whose sign depends on them)
+  // on every body, base included, by the two calls, in two identical worlds.
+  const Vector2 forces[] = {{real(0.3), real(-0.8)}, {real(-0.5), real(0.2)}, {0, real(-1)},
+                            {real(-0.0), real(0.4)}, {real(0.7), real(-0.0)}, {real(-0.2), 0}};
+  Simulator first(real(0.01));
+  Simulator second(real(0.01));
+  Simulator* simulators[2] = {&first, &second};
+  Agent* agents[2];
+  for (int k = 0; k < 2; ++k) {
+    simulators[k]->setContactSolver(GetParam());
+    agents[k] = &simulators[k]->registerObject(makeArm(5, real(0.3)));
+    agents[k]->setPose({1, 2}, real(0.2));
+    agents[k]->setJointTorque(2, real(0.1));
+  }
+  const real start = agents[1]->jointAngle(1);
+  for (int step = 0; step < 20; ++step) {
+    for (int b = Agent::base; b < 5; ++b) {
+      const Vector2 force = forces[static_cast<std::size_t>(b + step + 1) % std::size(forces)];
+      agents[0]->applyLinkForce(b, force, agents[0]->centerOfMass(b));
+      agents[1]->applyLinkForceAtCenterOfMass(b, force);
+    }
+    first.advanceTime();
+    second.advanceTime();
+  }
+  const auto bits = [](real value) {
+    std::uint64_t b = 0;
+    std::memcpy(&b, &value, sizeof value);
+    return b;
+  };
+  for (int b = Agent::base; b < 5; ++b) {
+    EXPECT_EQ(bits(agents[0]->bodyAngle(b)), bits(agents[1]->bodyAngle(b)));
+    EXPECT_EQ(bits(agents[0]->bodyAngularVelocity(b)), bits(agents[1]->bodyAngularVelocity(b)));
+    EXPECT_EQ(bits(agents[0]->bodyVelocity(b).x), bits(agents[1]->bodyVelocity(b).x));
+    EXPECT_EQ(bits(agents[0]->bodyVelocity(b).y), bits(agents[1]->bodyVelocity(b).y));
+    EXPECT_EQ(bits(agents[0]->centerOfMass(b).x), bits(agents[1]->centerOfMass(b).x));
+    EXPECT_EQ(bits(agents[0]->centerOfMass(b).y), bits(agents[1]->centerOfMass(b).y));
+  }
+  EXPECT_NE(agents[1]->jointAngle(1), start);  // the forces moved it
+}
+
 TEST_P(ArticulatedAgentTest, TorqueTurnsAJointAtTheRateTheCorePredicts) {
   Simulator simulator(real(0.01));
   simulator.setContactSolver(GetParam());
@@ -813,6 +854,14 @@ TEST(ArticulatedAgentRules, LoopsZeroLengthLinksAndBadInputAreRefusedNamingTheFi
   EXPECT_EQ(thrownField([&] { agent.setServoTarget(0, 1, 0); }), "ArticulatedAgentBase.servoGain");
   EXPECT_EQ(thrownField([&] { agent.setServoTarget(-1, 1, 1); }), "ArticulatedAgentBase.joint");
   EXPECT_EQ(thrownField([&] { agent.applyLinkForce(2, {1, 0}, {}); }), "ArticulatedAgentBase.body");
+  EXPECT_EQ(thrownField([&] {
+              agent.applyLinkForceAtCenterOfMass(-2, {1, 0});
+            }),
+            "ArticulatedAgentBase.body");
+  EXPECT_EQ(thrownField([&] {
+              agent.applyLinkForceAtCenterOfMass(0, {kNaN, 0});
+            }),
+            "ArticulatedAgentBase.force");
   EXPECT_EQ(thrownField([&] { agent.setPose({kNaN, 0}, 0); }), "ArticulatedAgentBase.position");
 
   // A non-finite pose is refused at registration, and the world is unchanged.
