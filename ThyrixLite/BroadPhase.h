@@ -53,6 +53,11 @@ class BroadPhase {
   void findPairs(std::span<const BoundingBox> boxes, std::span<const std::uint64_t> moved,
                  std::vector<BoxPair>& pairs);
 
+  /// Pairs the caller drops anyway, which the sweep then leaves out of its output
+  /// (SweepAndPrune::setNeverPaired(), same bits, same conditions); the few-box test and the
+  /// grid still report them.
+  void setNeverPaired(std::span<const std::uint64_t> bits) { sweep_.setNeverPaired(bits); }
+
   /// With false the grid always hashes its cells (for tests comparing the two grids).
   bool allowDenseGrid = true;
   /// With false more than smallCount boxes always go into the grid (for tests and

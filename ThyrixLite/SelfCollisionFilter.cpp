@@ -1,6 +1,7 @@
 #include <ThyrixLite/SelfCollisionFilter.h>
 
 #include <algorithm>
+#include <atomic>
 
 namespace thyrix {
 
@@ -29,6 +30,9 @@ void SelfCollisionFilter::assign(std::span<const std::uint32_t> partOf,
     for (std::size_t d = 1; d <= nearRange && k + d < count; ++d)
       if (!listedPartsMayTouch(partOf_[k], partOf_[k + d]))
         apartNear_[k] |= std::uint64_t{1} << (d - 1);
+  // One counter for every filter of the program (simulators may run in several threads).
+  static std::atomic<std::uint64_t> lastStamp{0};
+  stamp_ = lastStamp.fetch_add(1, std::memory_order_relaxed) + 1;
 }
 
 }  // namespace thyrix

@@ -24,6 +24,13 @@ namespace thyrix {
 /// used to decide. Without assign(), every pair of different primitives may touch.
 class SelfCollisionFilter {
  public:
+  SelfCollisionFilter() = default;
+  // Copies only (no moves, which would leave a moved-from filter with rules other than its
+  // stamp says): the rules are set once per object.
+  SelfCollisionFilter(const SelfCollisionFilter&) = default;
+  SelfCollisionFilter& operator=(const SelfCollisionFilter&) = default;
+  ~SelfCollisionFilter() = default;
+
   /// Sets the rules: primitive k (in the object's `primitives()` order) belongs to part
   /// `partOf[k]` (one entry per primitive), and the parts of each pair in @p apart never touch
   /// (either order; a pair may repeat). Part numbers are small: the table has one entry per
@@ -50,6 +57,11 @@ class SelfCollisionFilter {
     return listedPartsMayTouch(a, b);
   }
 
+  /// Names the rules: a new number at every assign() (unique in the program), 0 before the
+  /// first. Two filters with the same stamp answer alike, so a reader that kept what the rules
+  /// said (the simulator's broad phase) knows whether they changed.
+  [[nodiscard]] std::uint64_t stamp() const { return stamp_; }
+
   /// The part of primitive @p k (in `primitives()` order); k itself before assign().
   [[nodiscard]] std::uint32_t partOf(std::size_t k) const {
     return partOf_.empty() ? static_cast<std::uint32_t>(k) : partOf_[k];
@@ -72,6 +84,7 @@ class SelfCollisionFilter {
   std::vector<std::uint64_t> apartNear_;
   std::vector<std::uint32_t> apartStart_;  // per part + 1: where its list in apart_ begins
   std::vector<std::uint32_t> apart_;       // per part, the parts it never touches
+  std::uint64_t stamp_ = 0;                // see stamp()
 };
 
 }  // namespace thyrix

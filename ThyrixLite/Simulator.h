@@ -14,6 +14,7 @@
 #include <ThyrixLite/World.h>
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace thyrix {
@@ -263,6 +264,17 @@ class Simulator : public World {
   std::vector<std::uint64_t> borderReach_;    // per border, a bit per grid shape behind it
   std::vector<std::uint32_t> pendingBodies_;  // updateGeometry: bodies for its second loop
   std::size_t reachShapes_ = 0;               // grid shapes borderReach_ was computed for
+  // Pairs of one body's shapes that never touch, which the broad phase's sweep leaves out
+  // (updateNeverPaired(), SimulatorContacts.cpp).
+  struct NeverPaired {
+    std::vector<std::uint64_t> bits;  // per grid shape, or none while no body has two
+    std::size_t objects = 0;          // the objects the bits cover (registration appends)
+    // The multi-body objects' indices, with the SelfCollisionFilter::stamp() the bits follow.
+    std::vector<std::pair<std::uint32_t, std::uint64_t>> rules;
+  };
+  NeverPaired neverPaired_;
+  void updateNeverPaired();
+  void markNeverPaired(std::uint32_t body);
   std::vector<GlobalContactInfo> previousContacts_;  // the last detection's contacts
   std::vector<std::uint32_t> previousStart_;         // counting sort by shape A: offsets
   std::vector<std::uint32_t> previousOrder_;         // by shape A (then B if many): positions

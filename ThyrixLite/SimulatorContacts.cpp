@@ -31,6 +31,51 @@ bool ownShapesMayTouch(const MultiBodyObject* multi, std::uint32_t first, std::u
 
 }  // namespace
 
+void Simulator::markNeverPaired(std::uint32_t body) {
+  // Bit d - 1 of a grid shape's word: the grid shape d slots later is of the same body and
+  // the pair is one detectContacts drops (ownShapesMayTouch), whatever the poses. A body's
+  // shapes are consecutive, and so are their grid slots (borders have none).
+  const BodyState& state = bodyStates_[body];
+  const std::uint32_t first = state.firstShape;
+  const std::uint32_t end = first + state.shapeCount;
+  neverPaired_.bits.resize(gridShapes_.size(), 0);
+  for (std::uint32_t a = first; a < end; ++a) {
+    const std::uint32_t slot = gridSlot_[a];
+    if (slot == ~0u) continue;
+    std::uint64_t word = 0;
+    for (std::uint32_t b = a + 1; b < end; ++b) {
+      const std::uint32_t other = gridSlot_[b];
+      if (other == ~0u) continue;
+      if (other - slot > 64) break;
+      if (!ownShapesMayTouch(multiBodies_[body], first, a, b))
+        word |= std::uint64_t{1} << (other - slot - 1);
+    }
+    neverPaired_.bits[slot] = word;
+  }
+}
+
+void Simulator::updateNeverPaired() {
+  // Registration only appends: the new objects' bits are added. A multi-body object's rules
+  // may be set again (a new stamp): its bits are then marked again.
+  NeverPaired& never = neverPaired_;
+  for (std::size_t index = never.objects; index < bodyStates_.size(); ++index) {
+    const auto body = static_cast<std::uint32_t>(index);
+    if (multiBodies_[index] != nullptr)
+      never.rules.emplace_back(body, multiBodies_[index]->selfCollision().stamp());
+    if (bodyStates_[index].shapeCount > 1) markNeverPaired(body);
+  }
+  if (never.objects != bodyStates_.size() && !never.bits.empty())
+    never.bits.resize(gridShapes_.size(), 0);  // the shapes added alone pair with any other
+  never.objects = bodyStates_.size();
+  for (auto& [body, stamp] : never.rules) {
+    const std::uint64_t now = multiBodies_[body]->selfCollision().stamp();
+    if (now == stamp) continue;
+    stamp = now;
+    markNeverPaired(body);
+  }
+  broadPhase_.setNeverPaired(never.bits);
+}
+
 void Simulator::detectContacts() {
   // Appending to contacts of another detection: this list is no basis for the next reuse.
   const bool fromEmpty = contacts.empty();
@@ -41,6 +86,7 @@ void Simulator::detectContacts() {
   previousIndexed_ = false;  // indexed at most once a detection, for the shapes of now
   contactsSolved_ = false;   // these contacts, until the solver gives them forces
   statistics_.reusedContacts = 0;
+  updateNeverPaired();
   broadPhase_.findPairs(gridBoxes_, gridMovedBits_, pairs_);
   // The pairs of two circles in reach (most of a crowd's) are batched: their square roots and
   // divisions, in a short loop of their own, overlap from pair to pair (measured: one pair
@@ -56,7 +102,8 @@ void Simulator::detectContacts() {
     const std::uint32_t a = gridShapes_[pair.first];
     const std::uint32_t b = gridShapes_[pair.second];
     // Pairs within one body are settled here, without a call: a chain's neighbouring links
-    // overlap in every step and never touch.
+    // overlap in every step and never touch (the sweep leaves such pairs out already, the
+    // few-box test and the grid do not).
     const Shape& sa = shapes_[a];
     const Shape& sb = shapes_[b];
     if (sa.body == sb.body) {

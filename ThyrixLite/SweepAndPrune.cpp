@@ -56,6 +56,15 @@ bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, const Extents&
   const std::size_t start = pairs.size();
   const std::size_t n = count;
   const std::size_t maxTests = static_cast<std::size_t>(3 * testsPerBox * static_cast<real>(n));
+  const bool done = neverPaired_.size() == n ? sweep<true>(n, maxTests, neverPaired_.data(), pairs)
+                                             : sweep<false>(n, maxTests, nullptr, pairs);
+  if (!done) pairs.resize(start);
+  return done;
+}
+
+template <bool filtered>
+bool SweepAndPrune::sweep(std::size_t n, std::size_t maxTests, const std::uint64_t* never,
+                          std::vector<BoxPair>& pairs) const {
   std::size_t tests = 0;
   const Entry* const entries = entries_.data();
   for (std::size_t k = 0; k < n; ++k) {
@@ -63,14 +72,17 @@ bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, const Extents&
     std::size_t m = k + 1;
     for (; entries[m].lower <= p.upper; ++m) {
       const Entry& q = entries[m];
-      if (p.lower <= q.upper && p.crossLower <= q.crossUpper && q.crossLower <= p.crossUpper)
-        pairs.push_back({std::min(p.index, q.index), std::max(p.index, q.index)});
+      if (p.lower <= q.upper && p.crossLower <= q.crossUpper && q.crossLower <= p.crossUpper) {
+        const std::uint32_t low = std::min(p.index, q.index);
+        const std::uint32_t high = std::max(p.index, q.index);
+        // (high - low - 1 wraps to a large number for equal indices, which never occur.)
+        if constexpr (filtered)
+          if (high - low - 1 < 64 && ((never[low] >> (high - low - 1)) & 1) != 0) continue;
+        pairs.push_back({low, high});
+      }
     }
     tests += m - k - 1;
-    if (tests > maxTests) {
-      pairs.resize(start);
-      return false;
-    }
+    if (tests > maxTests) return false;
   }
   return true;
 }

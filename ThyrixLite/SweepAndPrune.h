@@ -68,6 +68,14 @@ class SweepAndPrune {
   /// Sizes the buffers for @p count boxes, so that calls with no more boxes do not allocate.
   void reserve(std::uint32_t count);
 
+  /// Pairs the caller would drop anyway (shapes of one body that never touch, e.g. a chain's
+  /// neighbouring links): bit `d - 1` of `bits[i]` set when boxes i and i + d (d = 1 to 64)
+  /// are not to be reported. findPairs() then leaves them out of its output, which is
+  /// otherwise the same, in the same order; its choice of axis and its giving up count them
+  /// as before. Used by the calls with as many boxes as @p bits has words (else ignored);
+  /// the words must stay valid until set again. Empty by default: nothing is left out.
+  void setNeverPaired(std::span<const std::uint64_t> bits) { neverPaired_ = bits; }
+
  private:
   /// A box as the sweep reads it: its interval on the sweep axis, then on the other axis.
   struct Entry {
@@ -83,10 +91,16 @@ class SweepAndPrune {
   void load(std::span<const BoundingBox> boxes);
   /// Puts the first @p n entries in sweep order: by lower side, then by index.
   void sort(std::size_t n);
+  /// The sweep over the first @p n sorted entries (findPairs()), leaving out the pairs
+  /// @p never marks (when @p filtered); false when it gives up past @p maxTests tests.
+  template <bool filtered>
+  bool sweep(std::size_t n, std::size_t maxTests, const std::uint64_t* never,
+             std::vector<BoxPair>& pairs) const;
 
   /// The boxes in sweep order (the last call's, until sorted), then a sentinel.
   std::vector<Entry> entries_;
   int axis_ = -1;  // the last call's axis (0 x, 1 y), -1 before the first call
+  std::span<const std::uint64_t> neverPaired_;  // see setNeverPaired()
 };
 
 }  // namespace thyrix

@@ -15,6 +15,7 @@
 #include <ThyrixLite/GUI.h>
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixLite/Simulator.h>
+#include <ThyrixLite/SweepAndPrune.h>
 #include <ThyrixPro/ArticulatedAgentQuasistatic.h>
 #include <ThyrixPro/ArticulatedBody.h>
 #include <ThyrixPro/ArticulatedLimb.h>
@@ -503,6 +504,121 @@ TEST_P(ArticulatedAgentTest, FoldedChainTouchesItselfWithoutInterpenetrating) {
   // Frictionless, the curled chain may keep sliding along itself, but slowly: the contacts,
   // not the links passing through each other, stop the curl.
   for (int i = 0; i < 5; ++i) EXPECT_LT(std::abs(agent.jointRate(i)), real(0.2)) << "joint " << i;
+}
+
+/// An agent whose self-collision rules can be set again after registration: every part apart
+/// from every other, or the usual rules (a link apart from its parent only).
+class RuledAgent : public Agent {
+ public:
+  using Agent::Agent;
+  void setRules(bool allApart) {
+    std::vector<std::uint32_t> parts(basePartCount(), 0);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> apart;
+    for (int i = 0; i < linkCount(); ++i) {
+      const auto part = static_cast<std::uint32_t>(i + 1);
+      parts.push_back(part);
+      if (allApart)
+        for (std::uint32_t other = 0; other < part; ++other) apart.emplace_back(part, other);
+      else
+        apart.emplace_back(part, static_cast<std::uint32_t>(parent(i) + 1));
+    }
+    selfCollision_.assign(parts, apart);
+  }
+};
+
+TEST_P(ArticulatedAgentTest, FoldedChainAmongManyShapesTouchesItselfAsTheRulesSay) {
+  // The folded chain of FoldedChainTouchesItselfWithoutInterpenetrating with 60 circles in a
+  // row far away: more shapes than the broad phase tests pair by pair, strung along x, so
+  // the sweep finds the pairs and leaves out those of shapes that never touch. Rules set
+  // again after registration are followed: no self-contact while every part is apart from
+  // every other, then contacts once the usual rules are back.
+  Simulator simulator(real(0.01));
+  simulator.setContactSolver(GetParam());
+  for (int k = 0; k < 60; ++k) {
+    auto& circle = simulator.registerObject(std::make_unique<Circle>(real(0.3), 1));
+    circle.r = {real(k), -40};
+    circle.fixed = true;
+  }
+  auto& agent = simulator.registerObject(std::make_unique<RuledAgent>(
+      std::vector<ArticulatedBasePart>{ArticulatedBasePart::circle(real(0.5), 2)},
+      std::vector<ArticulatedLimb>{
+          ArticulatedLimb::chain({real(0.5), 0}, 5, real(0.8), real(0.15), real(0.5))}));
+  for (int i = 1; i < 5; ++i) agent.setJointTorque(i, real(0.3));
+  agent.setRules(true);
+  int self = 0;
+  for (int step = 0; step < 300; ++step) {
+    simulator.advanceTime();
+    self += selfContacts(agent);
+  }
+  EXPECT_EQ(self, 0) << "every part is apart from every other";
+  agent.setRules(false);
+  for (int step = 0; step < 300; ++step) {
+    simulator.advanceTime();
+    self += selfContacts(agent);
+    // (Links that passed through each other while apart may still overlap: not checked.)
+    for (std::size_t k = 0; k < agent.contacts.size(); ++k) {
+      const LinkContactInfo c = agent.linkContact(k);
+      if (c.other != &agent) continue;
+      const int other = Agent::bodyOf(*c.otherPrimitive);
+      EXPECT_NE(agent.parent(c.body), other) << "step " << step;
+      EXPECT_NE(agent.parent(other), c.body) << "step " << step;
+    }
+  }
+  EXPECT_GT(self, 0) << "the folded chain should touch itself under the usual rules";
+}
+
+TEST(ArticulatedAgentRules, SweepLeavesOutExactlyThePairsMarkedNeverPaired) {
+  // Random boxes along x: the sweep with some pairs marked gives the pairs of the sweep
+  // without marks, in the same order, less the marked ones.
+  std::uint64_t seed = 12345;
+  const auto next = [&seed] {
+    seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<real>(seed >> 40) / static_cast<real>(1 << 24);
+  };
+  std::vector<BoundingBox> boxes;
+  for (int k = 0; k < 300; ++k) {
+    const Vector2 centre{real(k) * real(0.5) + next(), next()};
+    const Vector2 half{real(0.2) + next() / 2, real(0.2) + next() / 2};
+    boxes.push_back({centre - half, centre + half});
+  }
+  std::vector<std::uint64_t> never(boxes.size());
+  for (std::uint64_t& word : never)
+    word = static_cast<std::uint64_t>(next() * real(1 << 20)) * 0x9E3779B97F4A7C15ull;
+  SweepAndPrune plain;
+  SweepAndPrune filtered;
+  filtered.setNeverPaired(never);
+  std::vector<BoxPair> all;
+  std::vector<BoxPair> kept;
+  for (int call = 0; call < 2; ++call) {  // the second from the last order
+    all.clear();
+    kept.clear();
+    ASSERT_TRUE(plain.findPairs(boxes, 4, all));
+    ASSERT_TRUE(filtered.findPairs(boxes, 4, kept));
+    std::vector<BoxPair> expected;
+    std::size_t marked = 0;
+    for (const BoxPair& pair : all) {
+      const std::uint32_t gap = pair.second - pair.first;
+      if (gap <= 64 && ((never[pair.first] >> (gap - 1)) & 1) != 0) {
+        ++marked;
+        continue;
+      }
+      expected.push_back(pair);
+    }
+    EXPECT_GT(marked, 0u);
+    ASSERT_EQ(kept.size(), expected.size());
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+      EXPECT_EQ(kept[k].first, expected[k].first);
+      EXPECT_EQ(kept[k].second, expected[k].second);
+    }
+    for (BoundingBox& box : boxes) box = {box.lower + Vector2{0, real(0.01)}, box.upper};
+  }
+  // Marks for another count of boxes are not used.
+  filtered.setNeverPaired(std::span<const std::uint64_t>(never).first(10));
+  all.clear();
+  kept.clear();
+  ASSERT_TRUE(plain.findPairs(boxes, 4, all));
+  ASSERT_TRUE(filtered.findPairs(boxes, 4, kept));
+  EXPECT_EQ(kept.size(), all.size());
 }
 
 TEST(ArticulatedAgentSolvers, SelfContactForcesAgreeBetweenBaraffAndGaussSeidel) {
