@@ -4,7 +4,10 @@
 #include <ThyrixPro/ArticulatedAgentBase.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 namespace thyrix {
@@ -159,6 +162,17 @@ ArticulatedAgentBase::ArticulatedAgentBase(const std::vector<ArticulatedBasePart
     linkHalfLengths_.push_back(shape->halfLength());
     linkShapes_.push_back(std::move(shape));
   }
+  const auto bits = [](real value) {
+    return std::bit_cast<std::conditional_t<sizeof(real) == 8, std::uint64_t, std::uint32_t>>(
+        value);
+  };
+  capsulesCentredOnMass_ = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vector2 centre = layout.links[i].centerOfMass;
+    capsulesCentredOnMass_ = capsulesCentredOnMass_ &&
+                             bits(centre.x) == bits(linkHalfLengths_[i]) &&
+                             bits(centre.y) == bits(real(0));
+  }
 
   setSelfCollisionRules();
 
@@ -192,10 +206,20 @@ void ArticulatedAgentBase::placeShapes() {
   // Each link's capsule runs from its joint to its tip: its centre is half way along the axis.
   // The kinematics' (cos, sin) of the link's angle goes with it, so the simulator does not
   // compute them again for the capsule's end points (Primitive::direction()).
-  for (std::size_t i = 0; i < linkShapes_.size(); ++i) {
-    const int link = static_cast<int>(i);
-    linkShapes_[i]->place(body_.toWorld(link, {linkHalfLengths_[i], 0}), body_.angle(link),
-                          body_.axis(link));
+  // toWorld(link, (half length, 0)) is origin + rotate(axis, (half length, 0)), and the
+  // kinematics computed the centre of mass as origin + rotate(axis, centre of mass): the same
+  // bits when the two points are, without the rotation again.
+  if (capsulesCentredOnMass_) {
+    for (std::size_t i = 0; i < linkShapes_.size(); ++i) {
+      const int link = static_cast<int>(i);
+      linkShapes_[i]->place(body_.centerOfMass(link), body_.angle(link), body_.axis(link));
+    }
+  } else {
+    for (std::size_t i = 0; i < linkShapes_.size(); ++i) {
+      const int link = static_cast<int>(i);
+      linkShapes_[i]->place(body_.toWorld(link, {linkHalfLengths_[i], 0}), body_.angle(link),
+                            body_.axis(link));
+    }
   }
   r = body_.basePosition();
   alpha = baseAngle;

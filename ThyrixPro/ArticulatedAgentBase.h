@@ -297,6 +297,10 @@ class ArticulatedAgentBase : public MultiBodyObject {
   /// Each link capsule's half length (fixed), kept here so that placeShapes() only writes to
   /// the shapes, which lie apart in memory, and reads nothing from them.
   std::vector<real> linkHalfLengths_;
+  /// Every link's centre of mass is its capsule's centre, (half length, +0) in the link frame
+  /// bit for bit (ArticulatedLink::capsule()): placeShapes() then takes the kinematics'
+  /// centres of mass, computed by the same operations on the same values.
+  bool capsulesCentredOnMass_ = false;
   Vector2 centreOffset_;
   const Simulator* simulator_ = nullptr;
 };

@@ -860,6 +860,38 @@ TEST(ArticulatedAgentRules, NeighboursNeverCollideOthersDo) {
   EXPECT_EQ(Agent::bodyOf(agent.basePart(1)), -1);
 }
 
+TEST(ArticulatedAgentRules, LinkCapsulesLieHalfWayAlongTheirLinksBitForBit) {
+  // Each capsule's centre is the link frame's point (half length, 0), placed from the
+  // kinematics' centres of mass when every link's is there (the usual capsule link), else
+  // computed: the same bits either way, also with one link's centre of mass elsewhere.
+  const auto bits = [](real value) {
+    std::uint64_t b = 0;
+    std::memcpy(&b, &value, sizeof value);
+    return b;
+  };
+  for (const bool offCentre : {false, true}) {
+    ArticulatedLimb limb({real(0.5), 0});
+    for (int i = 0; i < 4; ++i) {
+      ArticulatedLink link = ArticulatedLink::capsule(i - 1, i == 0 ? Vector2{} : Vector2{1, 0},
+                                                      real(0.5), real(0.1), real(0.5));
+      if (offCentre && i == 2) link.centerOfMass = {real(0.3), real(0.05)};
+      limb.addLink(link, real(0.1), real(0.3) * real(i + 1));
+    }
+    Simulator simulator(real(0.01));
+    auto& agent = simulator.registerObject(std::make_unique<Agent>(
+        std::vector<ArticulatedBasePart>{ArticulatedBasePart::circle(real(0.5), 2)},
+        std::vector<ArticulatedLimb>{limb}));
+    agent.setPose({real(0.7), real(-0.2)}, real(0.9));
+    agent.setJointTorque(1, real(0.5));
+    for (int step = 0; step < 5; ++step) simulator.advanceTime();
+    for (int i = 0; i < agent.linkCount(); ++i) {
+      const Vector2 centre = agent.articulatedBody().toWorld(i, {real(0.5), 0});
+      EXPECT_EQ(bits(agent.linkShape(i).r.x), bits(centre.x)) << offCentre << " link " << i;
+      EXPECT_EQ(bits(agent.linkShape(i).r.y), bits(centre.y)) << offCentre << " link " << i;
+    }
+  }
+}
+
 TEST(ArticulatedAgentRules, LinkCapsulesCarryTheDirectionOfTheirAngle) {
   // The agent places each link's capsule with the kinematics' (cos, sin) of its angle, which
   // the simulator reuses for the capsule's end points (Primitive::direction()): it must be
