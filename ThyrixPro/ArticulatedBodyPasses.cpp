@@ -42,28 +42,35 @@ inline SymmetricMatrix3 ArticulatedBody::articulateJoint(std::size_t i,
   // Without damping (c = 0, every joint of the body: `damped` false) the additions of c are
   // left out: adding zero changes no bit (but a zero's sign), and the division waits for one
   // addition less.
+  //
+  // With h = (-r_y, r_x) the products with h are written with r's own coordinates:
+  // `a (-y) + c` is `c - a y` bit for bit (a product's sign is its factors', and x + (-y) is
+  // x - y), so no negation is computed. Likewise k = -g undamped: k k = g g, and b k = -(b g).
   const Vector2 r = shift_[i];
-  const Vector2 h{-r.y, r.x};
   const Vector2 b{da.xy, da.xz};
   const real g = cross(r, b);
-  const Vector2 ah{da.yy * h.x + da.yz * h.y, da.yz * h.x + da.zz * h.y};  // A h
+  const Vector2 ah{da.yz * r.x - da.yy * r.y, da.zz * r.x - da.yz * r.y};  // A h
+  const real hah = r.x * ah.y - r.y * ah.x;                                // h . A h
   SymmetricMatrix3 passed;
   real inverseD;
-  real k;
+  Vector2 beta;
   if constexpr (damped) {
     const real c = jointDamping_[i];
     inverseD = 1 / (da.xx + c);
-    k = c - g;
-    passed.xx = h.dot(ah) + c - k * k * inverseD;
+    const real k = c - g;
+    passed.xx = hah + c - k * k * inverseD;
+    beta = b * inverseD;
+    terms_[i] = {inverseD, k * inverseD, (da.xx + g) * inverseD, beta};
+    passed.xy = ah.x + beta.x * k;
+    passed.xz = ah.y + beta.y * k;
   } else {
     inverseD = 1 / da.xx;
-    k = -g;
-    passed.xx = h.dot(ah) - k * k * inverseD;
+    passed.xx = hah - g * g * inverseD;
+    beta = b * inverseD;
+    terms_[i] = {inverseD, -g * inverseD, (da.xx + g) * inverseD, beta};
+    passed.xy = ah.x - beta.x * g;
+    passed.xz = ah.y - beta.y * g;
   }
-  const Vector2 beta = b * inverseD;
-  terms_[i] = {inverseD, k * inverseD, (da.xx + g) * inverseD, beta};
-  passed.xy = ah.x + beta.x * k;
-  passed.xz = ah.y + beta.y * k;
   passed.yy = da.yy - beta.x * b.x;
   passed.yz = da.yz - beta.x * b.y;
   passed.zz = da.zz - beta.y * b.y;
