@@ -72,14 +72,15 @@ bool SweepAndPrune::sweep(std::size_t n, std::size_t maxTests, const std::uint64
     std::size_t m = k + 1;
     for (; entries[m].lower <= p.upper; ++m) {
       const Entry& q = entries[m];
-      if (p.lower <= q.upper && p.crossLower <= q.crossUpper && q.crossLower <= p.crossUpper) {
-        const std::uint32_t low = std::min(p.index, q.index);
-        const std::uint32_t high = std::max(p.index, q.index);
-        // (high - low - 1 wraps to a large number for equal indices, which never occur.)
-        if constexpr (filtered)
-          if (high - low - 1 < 64 && ((never[low] >> (high - low - 1)) & 1) != 0) continue;
+      const std::uint32_t low = std::min(p.index, q.index);
+      const std::uint32_t high = std::max(p.index, q.index);
+      // Marked pairs first: where the marks serve (a chain), most boxes in reach on the axis
+      // are such pairs, overlapping or not. (high - low - 1 wraps to a large number for
+      // equal indices, which never occur.)
+      if constexpr (filtered)
+        if (high - low - 1 < 64 && ((never[low] >> (high - low - 1)) & 1) != 0) continue;
+      if (p.lower <= q.upper && p.crossLower <= q.crossUpper && q.crossLower <= p.crossUpper)
         pairs.push_back({low, high});
-      }
     }
     tests += m - k - 1;
     if (tests > maxTests) return false;
