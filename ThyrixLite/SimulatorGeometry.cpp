@@ -287,7 +287,8 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
     if (!anyMoved)
       for (std::uint32_t t = state.firstShape; t < s; ++t) addCachedBox(t, boxMin, boxMax);
     anyMoved = true;
-    primitive.followOwner();
+    // (Tested here first: a part its owner places, an articulated link, is where it is.)
+    if (primitive.rigidlyAttached()) primitive.followOwner();
     if (shapes[s].type == ShapeType::Capsule)  // (a chain's links: inline, its common case)
       updateCapsule(s, primitive, pose, g, known, boxMin, boxMax);
     else  // a circle (or a border)
