@@ -261,42 +261,51 @@ THYRIX_FORCE_INLINE void Simulator::updateBody(std::uint32_t index, bool changed
 // them after every store of a flag and spilled the body box).
 THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool changed,
                                                     bool known) {
-  const Shape* const shapes = shapes_.data();
-  ShapePose* const poses = shapePoses_.data();
-  ShapeGeometry* const geometry = geometry_.data();
-  std::uint8_t* const shapeMoved = shapeMoved_.data();
-  Vector2 boxMin{realMax, realMax};
-  Vector2 boxMax{-realMax, -realMax};
-  // Once a shape has moved the body box is rebuilt, from every shape in order: those
-  // before the first moved one are added then, the unmoved ones after it as they come.
-  // A body none of whose shapes moved keeps its box and reads no shape's geometry.
-  bool anyMoved = changed;
-  const std::uint32_t end = state.firstShape + state.shapeCount;
-  for (std::uint32_t s = state.firstShape; s < end; ++s) {
-    Primitive& primitive = *shapes[s].primitive;
-    if (primitive.sensing_) sensingPrimitives_.push_back(&primitive);
-    ShapePose& pose = poses[s];
-    ShapeGeometry& g = geometry[s];
-    const bool moved = changed || !sameBits(primitive.r, pose.r) ||
-                       !sameBits(primitive.alpha, pose.alpha) || g.travel != 0;
-    if (!moved) {  // (its shapeMoved_ entry is 0 since the start of the detection)
-      if (anyMoved) addCachedBox(s, boxMin, boxMax);
-      continue;
+  // Known or not, the same for every shape: the loop in two copies, each with its own
+  // constant (measured: a flag read from the stack twice a shape otherwise).
+  const auto run = [&](auto knownConstant) {
+    constexpr bool poseKnown = decltype(knownConstant)::value;
+    const Shape* const shapes = shapes_.data();
+    ShapePose* const poses = shapePoses_.data();
+    ShapeGeometry* const geometry = geometry_.data();
+    std::uint8_t* const shapeMoved = shapeMoved_.data();
+    Vector2 boxMin{realMax, realMax};
+    Vector2 boxMax{-realMax, -realMax};
+    // Once a shape has moved the body box is rebuilt, from every shape in order: those
+    // before the first moved one are added then, the unmoved ones after it as they come.
+    // A body none of whose shapes moved keeps its box and reads no shape's geometry.
+    bool anyMoved = changed;
+    const std::uint32_t end = state.firstShape + state.shapeCount;
+    for (std::uint32_t s = state.firstShape; s < end; ++s) {
+      Primitive& primitive = *shapes[s].primitive;
+      if (primitive.sensing_) sensingPrimitives_.push_back(&primitive);
+      ShapePose& pose = poses[s];
+      ShapeGeometry& g = geometry[s];
+      const bool moved = changed || !sameBits(primitive.r, pose.r) ||
+                         !sameBits(primitive.alpha, pose.alpha) || g.travel != 0;
+      if (!moved) {  // (its shapeMoved_ entry is 0 since the start of the detection)
+        if (anyMoved) addCachedBox(s, boxMin, boxMax);
+        continue;
+      }
+      shapeMoved[s] = 1;
+      if (!anyMoved)
+        for (std::uint32_t t = state.firstShape; t < s; ++t) addCachedBox(t, boxMin, boxMax);
+      anyMoved = true;
+      // (Tested here first: a part its owner places, an articulated link, is where it is.)
+      if (primitive.rigidlyAttached()) primitive.followOwner();
+      if (shapes[s].type == ShapeType::Capsule)  // (a chain's links: inline, its common case)
+        updateCapsule(s, primitive, pose, g, poseKnown, boxMin, boxMax);
+      else  // a circle (or a border)
+        updateShape(s, poseKnown, false, boxMin, boxMax);
     }
-    shapeMoved[s] = 1;
-    if (!anyMoved)
-      for (std::uint32_t t = state.firstShape; t < s; ++t) addCachedBox(t, boxMin, boxMax);
-    anyMoved = true;
-    // (Tested here first: a part its owner places, an articulated link, is where it is.)
-    if (primitive.rigidlyAttached()) primitive.followOwner();
-    if (shapes[s].type == ShapeType::Capsule)  // (a chain's links: inline, its common case)
-      updateCapsule(s, primitive, pose, g, known, boxMin, boxMax);
-    else  // a circle (or a border)
-      updateShape(s, known, false, boxMin, boxMax);
-  }
-  if (!anyMoved) return;
-  state.object->boxMin = boxMin;
-  state.object->boxMax = boxMax;
+    if (!anyMoved) return;
+    state.object->boxMin = boxMin;
+    state.object->boxMax = boxMax;
+  };
+  if (known)
+    run(std::true_type{});
+  else
+    run(std::false_type{});
 }
 
 #undef THYRIX_FORCE_INLINE
