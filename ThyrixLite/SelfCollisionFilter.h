@@ -50,6 +50,13 @@ class SelfCollisionFilter {
     return listedPartsMayTouch(partOf_[a], partOf_[b]);
   }
 
+  /// Bit `d - 1` set when mayTouch(k, k + d) is false, for d = 1 to 64 and k + d one of the
+  /// object's primitives (the other bits are 0): the pairs of primitive @p k with those after
+  /// it that never touch, in one word.
+  [[nodiscard]] std::uint64_t apartAfter(std::size_t k) const {
+    return partOf_.empty() ? 0 : apartNear_[k];
+  }
+
   /// Whether primitives of parts @p a and @p b may touch: not within one part, nor between
   /// parts declared apart.
   [[nodiscard]] bool partsMayTouch(std::uint32_t a, std::uint32_t b) const {

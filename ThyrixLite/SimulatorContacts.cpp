@@ -39,6 +39,15 @@ void Simulator::markNeverPaired(std::uint32_t body) {
   const std::uint32_t first = state.firstShape;
   const std::uint32_t end = first + state.shapeCount;
   neverPaired_.bits.resize(gridShapes_.size(), 0);
+  const MultiBodyObject* const multi = multiBodies_[body];
+  if (multi != nullptr && gridSlot_[first] != ~0u && gridSlot_[end - 1] != ~0u &&
+      gridSlot_[end - 1] - gridSlot_[first] == end - 1 - first) {
+    // Every shape in the grid, in slots as consecutive as the shapes: the filter's own words
+    // (what ownShapesMayTouch reads for shapes up to 64 apart), one per shape.
+    for (std::uint32_t a = first; a < end; ++a)
+      neverPaired_.bits[gridSlot_[a]] = multi->selfCollision().apartAfter(a - first);
+    return;
+  }
   for (std::uint32_t a = first; a < end; ++a) {
     const std::uint32_t slot = gridSlot_[a];
     if (slot == ~0u) continue;
@@ -47,8 +56,7 @@ void Simulator::markNeverPaired(std::uint32_t body) {
       const std::uint32_t other = gridSlot_[b];
       if (other == ~0u) continue;
       if (other - slot > 64) break;
-      if (!ownShapesMayTouch(multiBodies_[body], first, a, b))
-        word |= std::uint64_t{1} << (other - slot - 1);
+      if (!ownShapesMayTouch(multi, first, a, b)) word |= std::uint64_t{1} << (other - slot - 1);
     }
     neverPaired_.bits[slot] = word;
   }

@@ -12,6 +12,7 @@
 #include <Scenes.h>
 #include <ThyrixLite/Border.h>
 #include <ThyrixLite/Circle.h>
+#include <ThyrixLite/ComposedPhysicalObject.h>
 #include <ThyrixLite/GUI.h>
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixLite/Simulator.h>
@@ -567,6 +568,32 @@ TEST_P(ArticulatedAgentTest, FoldedChainAmongManyShapesTouchesItselfAsTheRulesSa
   EXPECT_GT(self, 0) << "the folded chain should touch itself under the usual rules";
 }
 
+TEST(ArticulatedAgentRules, ComposedBodiesInARowTouchTheirNeighboursNotThemselves) {
+  // Rigid bodies of two overlapping circles each, 60 in a row along x, each overlapping the
+  // next: the sweep finds the pairs, leaving out each body's own pair (its shapes never
+  // touch); the pairs of neighbours remain.
+  Simulator simulator(real(0.01));
+  std::vector<ComposedPhysicalObject*> bodies;
+  for (int k = 0; k < 60; ++k) {
+    auto body = std::make_unique<ComposedPhysicalObject>();
+    body->add(std::make_unique<Circle>(real(0.32), 1), {real(-0.2), 0});
+    body->add(std::make_unique<Circle>(real(0.32), 1), {real(0.2), 0});
+    body->r = {real(k), 0};
+    bodies.push_back(&simulator.registerObject(std::move(body)));
+  }
+  simulator.advanceTime();
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    int withNext = 0;
+    for (const ContactInfo& c : bodies[k]->contacts) {
+      EXPECT_NE(c.other, bodies[k]) << "body " << k;
+      if (k + 1 < bodies.size() && c.other == bodies[k + 1]) ++withNext;
+    }
+    if (k + 1 < bodies.size()) {
+      EXPECT_GT(withNext, 0) << "body " << k;
+    }
+  }
+}
+
 TEST(ArticulatedAgentRules, SweepLeavesOutExactlyThePairsMarkedNeverPaired) {
   // Random boxes along x: the sweep with some pairs marked gives the pairs of the sweep
   // without marks, in the same order, less the marked ones.
@@ -858,6 +885,15 @@ TEST(ArticulatedAgentRules, NeighboursNeverCollideOthersDo) {
   EXPECT_TRUE(collide(3, 4));
   EXPECT_EQ(Agent::bodyOf(agent.linkShape(3)), 3);
   EXPECT_EQ(Agent::bodyOf(agent.basePart(1)), -1);
+  // The words of pairs that never touch say what mayTouch() says, pair by pair.
+  const SelfCollisionFilter& filter = agent.selfCollision();
+  const std::size_t count = agent.primitives().size();
+  for (std::size_t k = 0; k < count; ++k)
+    for (std::size_t d = 1; d <= 64; ++d) {
+      const bool apart = ((filter.apartAfter(k) >> (d - 1)) & 1) != 0;
+      EXPECT_EQ(apart, k + d < count && !filter.mayTouch(k, k + d)) << k << " " << d;
+    }
+  EXPECT_EQ(SelfCollisionFilter().apartAfter(3), 0u);
 }
 
 TEST(ArticulatedAgentRules, LinkCapsulesLieHalfWayAlongTheirLinksBitForBit) {
