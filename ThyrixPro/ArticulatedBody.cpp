@@ -165,9 +165,9 @@ void ArticulatedBody::forwardKinematics() {
   // (the regular numbering of a kinematic tree, Featherstone 2008, chapter 4). Three sweeps:
   // the angles (a chain of additions), their axes (cos, sin) all at once (cosSin(), a loop
   // that vectorizes: no call per link), then the origins and centre-of-mass offsets. The
-  // parent's angle and origin are carried in registers when it is the body just visited (slot
-  // i, the usual case within a limb), as in the articulated-body passes: each link waits for
-  // its parent's, and a round trip through memory would lengthen the chain.
+  // parent's angle, origin and axis are carried in registers when it is the body just visited
+  // (slot i, the usual case within a limb), as in the articulated-body passes: each link waits
+  // for its parent's, and a round trip through memory would lengthen the chain.
   angle_[0] = baseAngle_;
   real parentAngle = baseAngle_;
   bool kernelTakesAll = cosSinKernelTakes(baseAngle_);
@@ -185,16 +185,21 @@ void ArticulatedBody::forwardKinematics() {
   origin_[0] = basePosition_;
   comOffset_[0] = {};
   Vector2 parentOrigin = origin_[0];
+  Vector2 parentAxis = axis_[0];
   for (std::size_t i = 0; i < links_.size(); ++i) {
     const ArticulatedLink& l = links_[i];
     const std::size_t p = parentSlot_[i];
     const std::size_t self = i + 1;
-    if (p != i) parentOrigin = origin_[p];
-    const Vector2 shift = rotate(axis_[p], l.jointPosition);
+    if (p != i) {
+      parentOrigin = origin_[p];
+      parentAxis = axis_[p];
+    }
+    const Vector2 shift = rotate(parentAxis, l.jointPosition);
     shift_[i] = shift;
     parentOrigin += shift;
     origin_[self] = parentOrigin;
-    comOffset_[self] = rotate(axis_[self], l.centerOfMass);
+    parentAxis = axis_[self];
+    comOffset_[self] = rotate(parentAxis, l.centerOfMass);
   }
   // Everything that depends on the configuration is now out of date.
   inertiasStale_ = true;
