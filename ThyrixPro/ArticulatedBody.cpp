@@ -86,6 +86,8 @@ ArticulatedBody::ArticulatedBody(real baseMass, real baseInertia,
   inChain_.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i)
     inChain_[i] = parentSlot_[i] == i && gathers_[i + 1] == 0 ? 1 : 0;
+  allInChain_ =
+      std::all_of(inChain_.begin(), inChain_.end(), [](std::uint8_t c) { return c != 0; });
   q_.assign(n, 0);
   origin_.assign(n + 1, Vector2{});
   angle_.assign(n + 1, 0);

@@ -327,6 +327,7 @@ class ArticulatedBody {
   /// Per link: 1 when its parent is at slot i (the link before it, or the base for link 0) and
   /// its own slot gathers nothing: the inward pass's terms then stay in registers.
   std::vector<std::uint8_t> inChain_;
+  bool allInChain_ = false;     ///< every inChain_ is 1: a plain chain on the base
   std::vector<Vector2> shift_;  ///< origin minus the parent's origin: X_i is a pure translation
   /// Per joint, the coefficients the inertia pass leaves for the bias and outward passes:
   /// Table 7.1's U_i and d_i folded with X_i (see ArticulatedBody.cpp for the algebra).
