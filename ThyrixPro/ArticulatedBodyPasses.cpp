@@ -233,22 +233,30 @@ void ArticulatedBody::biasAndOutwardPasses(std::span<const Vector3> externalWren
   // qdot_i = (u_i - U_i^T v'_i) / (d_i + c_i), v_i = v'_i + S_i qdot_i, with qdot_i as in the
   // table above. The parent's velocity is carried in registers when it is the body just
   // visited (slot i), as in the inward pass.
-  Vector3 previous = v0;
-  for (std::size_t i = 0; i < links_.size(); ++i) {
+  // Link i's step from its parent's velocity @p vp at the parent's origin: its own there.
+  const auto outwardStep = [&](std::size_t i, const Vector3& vp) {
     const std::size_t self = i + 1;
-    const std::size_t parent = parentSlot_[i];
-    Vector3 vp = previous;
-    if (parent != i) vp = originVelocity_[parent];
     const JointTerms& t = terms_[i];
     const real qdot =
         jointBias_[i] * t.inverseD - t.gamma * angularPart(vp) - t.beta.dot(linearPart(vp));
     Vector3 v = translateMotion(vp, shift_[i]);
     v.x += qdot;
-    if (gathers_[self] != 0) originVelocity_[self] = v;  // read by a child not carried
-    previous = v;
     out.jointRates[i] = qdot;
     // The centre of mass moves with the body point there: v_O + omega x c.
     out.velocities[self] = translateMotion(v, comOffset_[self]);
+    return v;
+  };
+  Vector3 previous = v0;
+  if (allInChain_) {  // a plain chain: every parent is the link just visited, none gathers
+    for (std::size_t i = 0; i < links_.size(); ++i) previous = outwardStep(i, previous);
+    return;
+  }
+  for (std::size_t i = 0; i < links_.size(); ++i) {
+    const std::size_t parent = parentSlot_[i];
+    Vector3 vp = previous;
+    if (parent != i) vp = originVelocity_[parent];
+    previous = outwardStep(i, vp);
+    if (gathers_[i + 1] != 0) originVelocity_[i + 1] = previous;  // read by a child not carried
   }
 }
 
