@@ -173,9 +173,12 @@ void ArticulatedBody::forwardKinematics() {
   angle_[0] = baseAngle_;
   real parentAngle = baseAngle_;
   bool kernelTakesAll = cosSinKernelTakes(baseAngle_);
+  // (A plain chain, allInChain_, has every parent at slot i: no slot to test.)
   for (std::size_t i = 0; i < links_.size(); ++i) {
-    const std::size_t p = parentSlot_[i];
-    if (p != i) parentAngle = angle_[p];
+    if (!allInChain_) {
+      const std::size_t p = parentSlot_[i];
+      if (p != i) parentAngle = angle_[p];
+    }
     parentAngle += q_[i];
     angle_[i + 1] = parentAngle;
     kernelTakesAll &= cosSinKernelTakes(parentAngle);
@@ -190,11 +193,13 @@ void ArticulatedBody::forwardKinematics() {
   Vector2 parentAxis = axis_[0];
   for (std::size_t i = 0; i < links_.size(); ++i) {
     const ArticulatedLink& l = links_[i];
-    const std::size_t p = parentSlot_[i];
     const std::size_t self = i + 1;
-    if (p != i) {
-      parentOrigin = origin_[p];
-      parentAxis = axis_[p];
+    if (!allInChain_) {
+      const std::size_t p = parentSlot_[i];
+      if (p != i) {
+        parentOrigin = origin_[p];
+        parentAxis = axis_[p];
+      }
     }
     const Vector2 shift = rotate(parentAxis, l.jointPosition);
     shift_[i] = shift;
