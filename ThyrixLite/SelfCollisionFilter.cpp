@@ -24,12 +24,32 @@ void SelfCollisionFilter::assign(std::span<const std::uint32_t> partOf,
     apart_[fill[a]++] = b;
     apart_[fill[b]++] = a;
   }
-  const std::size_t count = partOf_.size();
+  // The near bits of primitive k: the primitives up to nearRange after it in its own part and
+  // in the parts listed apart from its part (what listedPartsMayTouch() refuses), found in
+  // the primitives grouped by part (counting sort, in order within a part) rather than by
+  // asking for each of the nearRange pairs.
+  const auto count = static_cast<std::uint32_t>(partOf_.size());
+  std::vector<std::uint32_t> partStart(parts + 1, 0);
+  for (const std::uint32_t part : partOf_) ++partStart[part + 1];
+  for (std::uint32_t p = 0; p < parts; ++p) partStart[p + 1] += partStart[p];
+  std::vector<std::uint32_t> byPart(count);
+  fill.assign(partStart.begin(), partStart.end() - 1);
+  for (std::uint32_t k = 0; k < count; ++k) byPart[fill[partOf_[k]]++] = k;
   apartNear_.assign(count, 0);
-  for (std::size_t k = 0; k < count; ++k)
-    for (std::size_t d = 1; d <= nearRange && k + d < count; ++d)
-      if (!listedPartsMayTouch(partOf_[k], partOf_[k + d]))
-        apartNear_[k] |= std::uint64_t{1} << (d - 1);
+  for (std::uint32_t k = 0; k < count; ++k) {
+    std::uint64_t word = 0;
+    const auto mark = [&](std::uint32_t part) {
+      const std::uint32_t* const begin = byPart.data() + partStart[part];
+      const std::uint32_t* const end = byPart.data() + partStart[part + 1];
+      for (const std::uint32_t* q = std::upper_bound(begin, end, k);
+           q != end && *q - k <= nearRange; ++q)
+        word |= std::uint64_t{1} << (*q - k - 1);
+    };
+    const std::uint32_t own = partOf_[k];
+    mark(own);
+    for (std::uint32_t j = apartStart_[own]; j < apartStart_[own + 1]; ++j) mark(apart_[j]);
+    apartNear_[k] = word;
+  }
   // One counter for every filter of the program (simulators may run in several threads).
   static std::atomic<std::uint64_t> lastStamp{0};
   stamp_ = lastStamp.fetch_add(1, std::memory_order_relaxed) + 1;

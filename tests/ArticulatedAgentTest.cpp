@@ -15,6 +15,7 @@
 #include <ThyrixLite/ComposedPhysicalObject.h>
 #include <ThyrixLite/GUI.h>
 #include <ThyrixLite/InvalidArgument.h>
+#include <ThyrixLite/SelfCollisionFilter.h>
 #include <ThyrixLite/Simulator.h>
 #include <ThyrixLite/SweepAndPrune.h>
 #include <ThyrixPro/ArticulatedAgentQuasistatic.h>
@@ -33,6 +34,7 @@
 #include <memory>
 #include <new>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace thyrix {
@@ -591,6 +593,31 @@ TEST(ArticulatedAgentRules, ComposedBodiesInARowTouchTheirNeighboursNotThemselve
     if (k + 1 < bodies.size()) {
       EXPECT_GT(withNext, 0) << "body " << k;
     }
+  }
+}
+
+TEST(ArticulatedAgentRules, NearPairsOfAFilterAnswerAsTheirPartsLists) {
+  // Random rules (parts of several primitives in any order, pairs repeated or of one part):
+  // the near pairs, answered from the precomputed words, as the parts' lists say.
+  std::uint64_t seed = 777;
+  const auto next = [&seed](std::uint32_t range) {
+    seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<std::uint32_t>((seed >> 33) % range);
+  };
+  for (int trial = 0; trial < 4; ++trial) {
+    std::vector<std::uint32_t> partOf(200);
+    for (std::uint32_t& part : partOf) part = next(trial < 2 ? 30 : 200);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> apart;
+    for (int k = 0; k < 80; ++k) apart.emplace_back(next(30), next(30));
+    apart.emplace_back(3, 3);
+    apart.emplace_back(4, 5);
+    apart.emplace_back(5, 4);
+    SelfCollisionFilter filter;
+    filter.assign(partOf, apart);
+    for (std::size_t k = 0; k < partOf.size(); ++k)
+      for (std::size_t d = 1; d <= 64 && k + d < partOf.size(); ++d)
+        ASSERT_EQ(filter.mayTouch(k, k + d), filter.partsMayTouch(partOf[k], partOf[k + d]))
+            << "trial " << trial << ": " << k << " and " << k + d;
   }
 }
 
