@@ -110,8 +110,9 @@ ThyrixChain::ThyrixChain(const ChainLayout& layout, ContactSolverKind solver)
 
 void ThyrixChain::step() {
   const Vector2 weight{0, -static_cast<real>(peerMass * layout_.gravity)};
-  // At the centre of mass: the same bits as applyLinkForce(i, weight, centerOfMass(i)).
-  for (int i = 0; i < layout_.links; ++i) agent_->applyLinkForceAtCenterOfMass(i, weight);
+  // At every link's centre of mass: the same bits as applyLinkForce(i, weight,
+  // centerOfMass(i)) for each link i.
+  agent_->applyForceAtEveryLinkCenterOfMass(weight);
   simulator_.advanceTime();
 }
 

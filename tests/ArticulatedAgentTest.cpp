@@ -163,6 +163,42 @@ TEST_P(ArticulatedAgentTest, AForceAtTheCentreOfMassGivesTheBitsOfTheSameForceAt
   EXPECT_NE(agents[1]->jointAngle(1), start);  // the forces moved it
 }
 
+TEST_P(ArticulatedAgentTest, AForceAtEveryLinksCentreOfMassGivesTheBitsOfTheForceOnEachLink) {
+  const Vector2 forces[] = {{real(0.3), real(-0.8)},
+                            {real(-0.5), real(0.2)},
+                            {0, real(-1)},
+                            {real(-0.0), real(0.4)},
+                            {real(0.7), real(-0.0)}};
+  Simulator first(real(0.01));
+  Simulator second(real(0.01));
+  Simulator* simulators[2] = {&first, &second};
+  Agent* agents[2];
+  for (int k = 0; k < 2; ++k) {
+    simulators[k]->setContactSolver(GetParam());
+    agents[k] = &simulators[k]->registerObject(makeArm(5, real(0.3)));
+    agents[k]->setPose({1, 2}, real(0.2));
+  }
+  for (int step = 0; step < 20; ++step) {
+    const Vector2 force = forces[static_cast<std::size_t>(step) % std::size(forces)];
+    for (int i = 0; i < 5; ++i) agents[0]->applyLinkForce(i, force, agents[0]->centerOfMass(i));
+    agents[1]->applyForceAtEveryLinkCenterOfMass(force);
+    first.advanceTime();
+    second.advanceTime();
+  }
+  const auto bits = [](real value) {
+    std::uint64_t b = 0;
+    std::memcpy(&b, &value, sizeof value);
+    return b;
+  };
+  for (int b = Agent::base; b < 5; ++b) {
+    EXPECT_EQ(bits(agents[0]->bodyAngle(b)), bits(agents[1]->bodyAngle(b)));
+    EXPECT_EQ(bits(agents[0]->bodyAngularVelocity(b)), bits(agents[1]->bodyAngularVelocity(b)));
+    EXPECT_EQ(bits(agents[0]->bodyVelocity(b).x), bits(agents[1]->bodyVelocity(b).x));
+    EXPECT_EQ(bits(agents[0]->bodyVelocity(b).y), bits(agents[1]->bodyVelocity(b).y));
+  }
+  EXPECT_NE(agents[1]->bodyAngularVelocity(2), 0);  // the forces moved it
+}
+
 TEST_P(ArticulatedAgentTest, TorqueTurnsAJointAtTheRateTheCorePredicts) {
   Simulator simulator(real(0.01));
   simulator.setContactSolver(GetParam());
@@ -1071,6 +1107,10 @@ TEST(ArticulatedAgentRules, LoopsZeroLengthLinksAndBadInputAreRefusedNamingTheFi
             "ArticulatedAgentBase.body");
   EXPECT_EQ(thrownField([&] {
               agent.applyLinkForceAtCenterOfMass(0, {kNaN, 0});
+            }),
+            "ArticulatedAgentBase.force");
+  EXPECT_EQ(thrownField([&] {
+              agent.applyForceAtEveryLinkCenterOfMass({0, kNaN});
             }),
             "ArticulatedAgentBase.force");
   EXPECT_EQ(thrownField([&] { agent.setPose({kNaN, 0}, 0); }), "ArticulatedAgentBase.position");
