@@ -36,6 +36,7 @@ void Simulator::markNeverPaired(std::uint32_t body) {
   // the pair is one detectContacts drops (ownShapesMayTouch), whatever the poses. A body's
   // shapes are consecutive, and so are their grid slots (borders have none).
   const BodyState& state = bodyStates_[body];
+  if (state.shapeCount < 2) return;  // no pair of its own (its words, if any, stay 0)
   const std::uint32_t first = state.firstShape;
   const std::uint32_t end = first + state.shapeCount;
   neverPaired_.bits.resize(gridShapes_.size(), 0);
@@ -70,7 +71,7 @@ void Simulator::updateNeverPaired() {
     const auto body = static_cast<std::uint32_t>(index);
     if (multiBodies_[index] != nullptr)
       never.rules.emplace_back(body, multiBodies_[index]->selfCollision().stamp());
-    if (bodyStates_[index].shapeCount > 1) markNeverPaired(body);
+    markNeverPaired(body);
   }
   if (never.objects != bodyStates_.size() && !never.bits.empty())
     never.bits.resize(gridShapes_.size(), 0);  // the shapes added alone pair with any other
