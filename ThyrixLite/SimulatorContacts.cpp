@@ -82,7 +82,6 @@ void Simulator::updateNeverPaired() {
     stamp = now;
     markNeverPaired(body);
   }
-  broadPhase_.setNeverPaired(never.bits);
 }
 
 void Simulator::detectContacts() {
@@ -95,7 +94,10 @@ void Simulator::detectContacts() {
   previousIndexed_ = false;  // indexed at most once a detection, for the shapes of now
   contactsSolved_ = false;   // these contacts, until the solver gives them forces
   statistics_.reusedContacts = 0;
-  updateNeverPaired();
+  // (Without new objects or objects with rules, there is nothing to look at.)
+  if (neverPaired_.objects != bodyStates_.size() || !neverPaired_.rules.empty())
+    updateNeverPaired();
+  broadPhase_.setNeverPaired(neverPaired_.bits);
   broadPhase_.findPairs(gridBoxes_, gridMovedBits_, pairs_);
   // The pairs of two circles in reach (most of a crowd's) are batched: their square roots and
   // divisions, in a short loop of their own, overlap from pair to pair (measured: one pair
