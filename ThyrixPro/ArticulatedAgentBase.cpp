@@ -9,6 +9,9 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace thyrix {
 
@@ -273,6 +276,35 @@ void ArticulatedAgentBase::clearServo(int i) {
   if (servoGains_[index(i)] > 0) --servoCount_;
   servoGains_[index(i)] = 0;
   servosChanged_ = true;
+}
+
+void ArticulatedAgentBase::applyForceAtEveryLinkCenterOfMass(Vector2 force) {
+  if (!std::isfinite(force.x) || !std::isfinite(force.y)) [[unlikely]]
+    refuseLinkForce(base, force, Vector2{});
+  const real torque = cross(Vector2{}, force);  // the same for every link
+  Vector3* const wrenches = linkWrenches_.data();
+#if defined(__SSE2__)
+  // In double, each wrench's force as one pair: the same additions. (GCC vectorizes the plain
+  // loop across neighbouring wrenches, whose 16-byte loads then straddle the last stores: a
+  // store-forwarding stall per link, measured slower than a call per link.)
+  if constexpr (std::is_same_v<real, double>) {
+    static_assert(std::is_standard_layout_v<Vector3> && sizeof(Vector3) == 3 * sizeof(real),
+                  "a wrench is read as its three coordinates");
+    const __m128d pair = _mm_set_pd(force.y, force.x);
+    for (std::size_t slot = 1; slot < linkWrenches_.size(); ++slot) {
+      auto* const w = reinterpret_cast<real*>(&wrenches[slot]);
+      w[0] += torque;
+      _mm_storeu_pd(w + 1, _mm_add_pd(_mm_loadu_pd(w + 1), pair));
+    }
+    return;
+  }
+#endif
+  for (std::size_t slot = 1; slot < linkWrenches_.size(); ++slot) {
+    Vector3& wrench = wrenches[slot];
+    wrench.x += torque;
+    wrench.y += force.x;
+    wrench.z += force.y;
+  }
 }
 
 void ArticulatedAgentBase::refuseLinkForce(int b, Vector2 force, Vector2 worldPoint) const {

@@ -184,17 +184,7 @@ class ArticulatedAgentBase : public MultiBodyObject {
   /// applyLinkForceAtCenterOfMass(i, force) for every link i (not the base), bit for bit: the
   /// same force on each link, e.g. the weight of links of equal mass.
   /// @throws InvalidArgument naming "ArticulatedAgentBase.force" unless finite
-  void applyForceAtEveryLinkCenterOfMass(Vector2 force) {
-    if (!std::isfinite(force.x) || !std::isfinite(force.y)) [[unlikely]]
-      refuseLinkForce(base, force, Vector2{});
-    const real torque = cross(Vector2{}, force);  // the same for every link
-    for (std::size_t slot = 1; slot < linkWrenches_.size(); ++slot) {
-      Vector3& wrench = linkWrenches_[slot];
-      wrench.x += torque;
-      wrench.y += force.x;
-      wrench.z += force.y;
-    }
-  }
+  void applyForceAtEveryLinkCenterOfMass(Vector2 force);
 
   // --- proprioception and poses --------------------------------------------------------------
 
