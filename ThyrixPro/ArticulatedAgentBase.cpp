@@ -278,33 +278,43 @@ void ArticulatedAgentBase::clearServo(int i) {
   servosChanged_ = true;
 }
 
-void ArticulatedAgentBase::applyForceAtEveryLinkCenterOfMass(Vector2 force) {
-  if (!std::isfinite(force.x) || !std::isfinite(force.y)) [[unlikely]]
-    refuseLinkForce(base, force, Vector2{});
-  const real torque = cross(Vector2{}, force);  // the same for every link
-  Vector3* const wrenches = linkWrenches_.data();
+namespace {
+
+/// Adds (@p torque, @p force) to each of the @p count wrenches from @p wrenches on. In
+/// double, each wrench's force as one SSE2 pair: the same additions. (GCC vectorizes the
+/// plain loop across neighbouring wrenches, 24 bytes each, whose 16-byte loads then straddle
+/// the last stores: a store-forwarding stall per link, measured slower than a call per link.)
+/// A template, so that a float build never instantiates the pairs.
+template <class Real>
+void addToEachWrench(Vector3* wrenches, std::size_t count, Real torque, Vector2 force) {
 #if defined(__SSE2__)
-  // In double, each wrench's force as one pair: the same additions. (GCC vectorizes the plain
-  // loop across neighbouring wrenches, whose 16-byte loads then straddle the last stores: a
-  // store-forwarding stall per link, measured slower than a call per link.)
-  if constexpr (std::is_same_v<real, double>) {
-    static_assert(std::is_standard_layout_v<Vector3> && sizeof(Vector3) == 3 * sizeof(real),
+  if constexpr (std::is_same_v<Real, double>) {
+    static_assert(std::is_standard_layout_v<Vector3> && sizeof(Vector3) == 3 * sizeof(Real),
                   "a wrench is read as its three coordinates");
     const __m128d pair = _mm_set_pd(force.y, force.x);
-    for (std::size_t slot = 1; slot < linkWrenches_.size(); ++slot) {
-      auto* const w = reinterpret_cast<real*>(&wrenches[slot]);
+    for (std::size_t k = 0; k < count; ++k) {
+      auto* const w = reinterpret_cast<Real*>(&wrenches[k]);
       w[0] += torque;
       _mm_storeu_pd(w + 1, _mm_add_pd(_mm_loadu_pd(w + 1), pair));
     }
     return;
   }
 #endif
-  for (std::size_t slot = 1; slot < linkWrenches_.size(); ++slot) {
-    Vector3& wrench = wrenches[slot];
-    wrench.x += torque;
-    wrench.y += force.x;
-    wrench.z += force.y;
+  for (std::size_t k = 0; k < count; ++k) {
+    wrenches[k].x += torque;
+    wrenches[k].y += force.x;
+    wrenches[k].z += force.y;
   }
+}
+
+}  // namespace
+
+void ArticulatedAgentBase::applyForceAtEveryLinkCenterOfMass(Vector2 force) {
+  if (!std::isfinite(force.x) || !std::isfinite(force.y)) [[unlikely]]
+    refuseLinkForce(base, force, Vector2{});
+  // The torque, the same for every link, as applyLinkForceAtCenterOfMass() computes it.
+  addToEachWrench<real>(linkWrenches_.data() + 1, linkWrenches_.size() - 1, cross(Vector2{}, force),
+                        force);
 }
 
 void ArticulatedAgentBase::refuseLinkForce(int b, Vector2 force, Vector2 worldPoint) const {
