@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <type_traits>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace thyrix {
 namespace {
@@ -28,14 +32,35 @@ std::size_t interleaved(std::size_t p, std::size_t n) {
   return start + j % stream * streams + j / stream;
 }
 
+/// A bound on a sweep's sum of squared changes above which its largest |change_k| A_kk is
+/// certainly above @p tolerance, for @p n rows whose least A_kk is @p leastResponse; +inf
+/// when none is known. With m the largest |change_k| and R the least A_kk, the sum S is at
+/// most about n m^2, so S > 4 n (tolerance / R)^2 gives m > 1.8 tolerance / R, and the change
+/// of largest magnitude alone has m A_kk >= m R > tolerance, roundings included: the margin
+/// covers the sum's relative error (n epsilon <= 0.1) and the quotient's, and the squares and
+/// the product stay far from underflow (tolerance / R >= sqrt(least normal), tolerance
+/// normal). A pile's sweeps change forces far above the tolerance: their convergence test then
+/// needs no pass over the changes.
+real convergenceBound(real tolerance, real leastResponse, std::size_t n) {
+  constexpr real infinity = std::numeric_limits<real>::infinity();
+  constexpr real least = std::numeric_limits<real>::min();
+  const real ratio = tolerance / leastResponse;
+  const bool known = tolerance >= least && leastResponse > 0 && ratio >= std::sqrt(least) &&
+                     ratio < infinity &&
+                     static_cast<real>(n) * std::numeric_limits<real>::epsilon() <= real(0.1);
+  if (!known) return infinity;                      // NaN or unsuited values included
+  return 4 * static_cast<real>(n) * ratio * ratio;  // may be +inf: then not used either
+}
+
 }  // namespace
 
 void GaussSeidelSolver::reserve(std::size_t bodies, std::size_t rows) {
-  for (auto* buffer : {&forces_, &changes_, &direction_}) buffer->reserve(rows);
+  for (auto* buffer : {&forces_, &changes_, &direction_, &responses_}) buffer->reserve(rows);
   rows_.reserve(rows);
   turning_.reserve(rows);
   // Each row may bring two bodies of its own (a fixed body gets one copy per row).
-  bodies_.reserve(2 * rows);
+  velocities_.reserve(2 * rows);
+  omegas_.reserve(2 * rows);
   globalBody_.reserve(2 * rows);
   localBody_.reserve(bodies);
 }
@@ -43,7 +68,9 @@ void GaussSeidelSolver::reserve(std::size_t bodies, std::size_t rows) {
 int GaussSeidelSolver::solve(std::span<const std::uint32_t> island,
                              std::span<ContactConstraint> rows, std::span<SolverBody> bodies,
                              const ContactSolverSettings& settings) {
-  gather(island, rows, bodies, settings.relaxation);
+  const real leastResponse = gather(island, rows, bodies, settings.relaxation);
+  const real tolerance = settings.gaussSeidelTolerance;
+  const real bound = convergenceBound(tolerance, leastResponse, rows_.size());
   const bool accelerate = settings.accelerateGaussSeidel;
   if (accelerate) {
     // resize, not assign: assign would reallocate to the exact size at each new largest
@@ -58,40 +85,45 @@ int GaussSeidelSolver::solve(std::span<const std::uint32_t> island,
     // Symmetric Gauss-Seidel: alternate sweep directions, so that a correction travels through
     // a long chain of contacts both ways (the weight down, the floor's reaction up).
     const bool backward = sweeps % 2 == 0;
-    const SweepResult result = turningIsland_
-                                   ? (backward ? sweep<true, true>() : sweep<false, true>())
-                                   : (backward ? sweep<true, false>() : sweep<false, false>());
-    if (result.largestChange <= settings.gaussSeidelTolerance) break;
+    const real squaredNorm = turningIsland_
+                                 ? (backward ? sweep<true, true>() : sweep<false, true>())
+                                 : (backward ? sweep<true, false>() : sweep<false, false>());
+    // Converged when the largest change is within the tolerance; a large squared norm rules
+    // that out without a pass over the changes (see convergenceBound()). Written !(a > b): a
+    // NaN norm leaves the decision to largestChange(), which skips NaN changes.
+    if (!(squaredNorm > bound) && largestChange() <= tolerance) break;
     // The last sweep is not followed by a conjugate step: the result is a projected sweep's.
     if (!accelerate || sweeps == settings.gaussSeidelMaxIterations) continue;
-    if (lastNorm > 0 && result.squaredNorm <= lastNorm) {
-      const real beta = result.squaredNorm / lastNorm;
+    if (lastNorm > 0 && squaredNorm <= lastNorm) {
+      const real beta = squaredNorm / lastNorm;
       turningIsland_ ? conjugateStep<true>(beta) : conjugateStep<false>(beta);
     } else {  // first sweep, or the change grew: restart along the change itself
       std::copy(changes_.begin(), changes_.end(), direction_.begin());
     }
-    lastNorm = result.squaredNorm;
+    lastNorm = squaredNorm;
   }
   scatter(island, rows, bodies);
   return sweeps;
 }
 
-void GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
+real GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
                                std::span<const ContactConstraint> rows,
                                std::span<const SolverBody> bodies, real relaxation) {
   const std::size_t n = island.size();
   if (localBody_.size() < bodies.size()) localBody_.resize(bodies.size(), noBody);
   // Each row brings at most two bodies: the local arrays are sized once, then filled through
   // plain pointers (one pass, no growth checks).
-  if (bodies_.size() < 2 * n) {
-    bodies_.resize(2 * n);
+  if (velocities_.size() < 2 * n) {
+    velocities_.resize(2 * n);
+    omegas_.resize(2 * n);
     globalBody_.resize(2 * n);
   }
   rows_.resize(n);
-  turning_.resize(n);
   forces_.resize(n);
   changes_.resize(n);
-  Body* const local = bodies_.data();
+  responses_.resize(n);
+  Vector2* const velocity = velocities_.data();
+  real* const omega = omegas_.data();
   std::uint32_t* const global = globalBody_.data();
   std::uint32_t* const localOf = localBody_.data();
   std::uint32_t used = 0;
@@ -99,7 +131,8 @@ void GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
     // A body that cannot move gets a private copy in each row: rows that share only a wall
     // then do not wait on each other's (null) updates of its velocity.
     if (b.inverseMass == 0 && b.inverseInertia == 0) {
-      local[used] = {b.v, b.omega};
+      velocity[used] = b.v;
+      omega[used] = b.omega;
       global[used] = noBody;
       return used++;
     }
@@ -107,7 +140,8 @@ void GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
     if (index == noBody) {
       index = used++;
       localOf[body] = index;
-      local[index] = {b.v, b.omega};
+      velocity[index] = b.v;
+      omega[index] = b.omega;
       global[index] = body;
     }
     return index;
@@ -116,69 +150,140 @@ void GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
   const auto turns = [](real arm, const SolverBody& body) {
     return arm != 0 && (body.inverseInertia != 0 || body.omega != 0);
   };
+  // relaxation / A_kk; a row nothing can move along takes no force (its zero diagonal would
+  // poison the island).
+  const auto inverseScaledOf = [relaxation](real response) {
+    return response > 0 ? relaxation / response : 0;
+  };
+  const auto turningOf = [](const ContactConstraint& c, const SolverBody& bodyA,
+                            const SolverBody& bodyB, real inverseScaled) {
+    return Turning{c.armA * inverseScaled, c.armB * inverseScaled, -c.armA * bodyA.inverseInertia,
+                   c.armB * bodyB.inverseInertia};
+  };
   bool turning = false;
+  // The least A_kk, NaN if one is NaN (for the convergence bound).
+  real leastResponse = std::numeric_limits<real>::infinity();
   for (std::size_t p = 0; p < n; ++p) {
     const ContactConstraint& c = rows[island[p]];
     const std::size_t q = interleaved(p, n);
     const SolverBody& bodyA = bodies[c.a];
     const SolverBody& bodyB = bodies[c.b];
     const real response = c.selfResponse(bodyA, bodyB);
-    // A row nothing can move along takes no force (its zero diagonal would poison the island).
-    const real inverseScaled = response > 0 ? relaxation / response : 0;
+    const real inverseScaled = inverseScaledOf(response);
     const std::uint32_t a = localIndex(c.a, bodyA);
     const std::uint32_t b = localIndex(c.b, bodyB);
     // The starting force's velocities, added here in island order (no pass of its own), by
     // ContactConstraint::applyImpulse's formula written for the local bodies (same bits).
     const real force = c.force;
-    local[a].v -= c.normal * (force * bodyA.inverseMass);
-    local[a].omega -= c.armA * force * bodyA.inverseInertia;
-    local[b].v += c.normal * (force * bodyB.inverseMass);
-    local[b].omega += c.armB * force * bodyB.inverseInertia;
-    rows_[q] = {a,
-                b,
-                c.normal * bodyA.inverseMass,
-                c.normal * bodyB.inverseMass,
-                c.normal * inverseScaled,
-                c.target * inverseScaled,
-                response};
-    // Kept for every row, read only if one of them turns.
-    turning_[q] = {c.armA * inverseScaled, c.armB * inverseScaled, -c.armA * bodyA.inverseInertia,
-                   c.armB * bodyB.inverseInertia};
-    turning = turning || turns(c.armA, bodyA) || turns(c.armB, bodyB);
+    velocity[a] -= c.normal * (force * bodyA.inverseMass);
+    omega[a] -= c.armA * force * bodyA.inverseInertia;
+    velocity[b] += c.normal * (force * bodyB.inverseMass);
+    omega[b] += c.armB * force * bodyB.inverseInertia;
+    rows_[q] = {c.normal * bodyA.inverseMass,       c.normal * bodyB.inverseMass,
+                c.normal * inverseScaled,           c.target * inverseScaled,
+                a * std::uint32_t{sizeof(Vector2)}, b * std::uint32_t{sizeof(Vector2)}};
+    responses_[q] = response;
+    if (!(response >= leastResponse)) leastResponse = response;
     forces_[q] = force;
+    if (turning) {
+      turning_[q] = turningOf(c, bodyA, bodyB, inverseScaled);
+    } else if (turns(c.armA, bodyA) || turns(c.armB, bodyB)) {
+      // The first row that turns: the turning parts of the rows before it, which were not
+      // written (most islands never turn), by the same formulas (same bits).
+      turning = true;
+      turning_.resize(n);
+      for (std::size_t r = 0; r <= p; ++r) {
+        const ContactConstraint& d = rows[island[r]];
+        const SolverBody& dA = bodies[d.a];
+        const SolverBody& dB = bodies[d.b];
+        turning_[interleaved(r, n)] = turningOf(d, dA, dB, inverseScaledOf(d.selfResponse(dA, dB)));
+      }
+    }
   }
   turningIsland_ = turning;
   bodyCount_ = used;
+  return leastResponse;
 }
 
-template <bool turning>
-void GaussSeidelSolver::apply(std::size_t p, real change) {
-  const Row& row = rows_[p];
-  Body& bodyA = bodies_[row.a];
-  Body& bodyB = bodies_[row.b];
-  bodyA.v -= row.pushA * change;
-  bodyB.v += row.pushB * change;
-  if constexpr (turning) {
-    bodyA.omega += turning_[p].turnA * change;
-    bodyB.omega += turning_[p].turnB * change;
-  }
+real GaussSeidelSolver::largestChange() const {
+  // The sweep's former measure, exactly: NaN changes are skipped as std::max skips them.
+  real largest = 0;
+  for (std::size_t p = 0; p < changes_.size(); ++p)
+    largest = std::max(largest, std::abs(changes_[p]) * responses_[p]);
+  return largest;
 }
+
+namespace {
+
+/// The island's body at byte offset @p offset of @p velocity (rows name their bodies so: no
+/// multiplication to find them).
+inline Vector2& at(Vector2* velocity, std::uint32_t offset) {
+  return *reinterpret_cast<Vector2*>(reinterpret_cast<char*>(velocity) + offset);
+}
+
+/// The angular velocity in @p omega of the body at byte offset @p offset of the velocities.
+inline real& omegaAt(real* omega, std::uint32_t offset) { return omega[offset / sizeof(Vector2)]; }
+
+/// Adds to @p velocity (the island's) the change @p amount of a row's force through its bodies
+/// at byte offsets @p a and @p b and its pushes: B's velocity is read after A's is stored (the same
+/// result if they were one body). In double with SSE2, by two lanes at once (the same operations,
+/// the same bits); everything the row gives is read before the first store, which the compiler must
+/// take for one that may change anything.
+inline void push(Vector2* velocity, std::uint32_t a, std::uint32_t b, const Vector2& pushA,
+                 const Vector2& pushB, real amount) {
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<real, double>) {
+    const __m128d k = _mm_set1_pd(amount);
+    const __m128d byA = _mm_mul_pd(_mm_load_pd(&pushA.x), k);
+    const __m128d byB = _mm_mul_pd(_mm_load_pd(&pushB.x), k);
+    double* const va = &at(velocity, a).x;
+    double* const vb = &at(velocity, b).x;
+    _mm_storeu_pd(va, _mm_sub_pd(_mm_loadu_pd(va), byA));
+    _mm_storeu_pd(vb, _mm_add_pd(_mm_loadu_pd(vb), byB));
+    return;
+  }
+#endif
+  at(velocity, a) -= pushA * amount;
+  at(velocity, b) += pushB * amount;
+}
+
+}  // namespace
 
 template <bool backward, bool turning>
-GaussSeidelSolver::SweepResult GaussSeidelSolver::sweep() {
-  SweepResult result;
+real GaussSeidelSolver::sweep() {
+  real squaredNorm = 0;
   const std::size_t n = rows_.size();
+  const Row* const rows = rows_.data();
+  const Turning* const turns = turning_.data();
+  Vector2* const velocity = velocities_.data();
+  real* const omega = omegas_.data();
+  real* const forces = forces_.data();
+  real* const changes = changes_.data();
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t p = backward ? n - 1 - i : i;
-    const Row& row = rows_[p];
-    Body& bodyA = bodies_[row.a];
-    Body& bodyB = bodies_[row.b];
-    const real force = forces_[p];
-    const real start = force + row.scaledTarget;
-    // The normal velocity w times relaxation / A_kk, a force.
-    real scaledVelocity = dot(row.scaledNormal, bodyB.v - bodyA.v);
+    const Row& row = rows[p];
+    const std::uint32_t a = row.a;
+    const std::uint32_t b = row.b;
+    const real scaledTarget = row.scaledTarget;
+    const real force = forces[p];
+    const real start = force + scaledTarget;
+    // The normal velocity w times relaxation / A_kk, a force: in double the velocity
+    // difference and the products by two lanes at once (the same operations, the same bits).
+    real scaledVelocity;
+#if defined(__SSE2__)
+    if constexpr (std::is_same_v<real, double>) {
+      const __m128d product = _mm_mul_pd(
+          _mm_load_pd(&row.scaledNormal.x),
+          _mm_sub_pd(_mm_loadu_pd(&at(velocity, b).x), _mm_loadu_pd(&at(velocity, a).x)));
+      scaledVelocity = _mm_cvtsd_f64(_mm_add_sd(product, _mm_unpackhi_pd(product, product)));
+    } else
+#endif
+    {
+      scaledVelocity = dot(row.scaledNormal, at(velocity, b) - at(velocity, a));
+    }
     if constexpr (turning)
-      scaledVelocity += turning_[p].scaledArmB * bodyB.omega - turning_[p].scaledArmA * bodyA.omega;
+      scaledVelocity +=
+          turns[p].scaledArmB * omegaAt(omega, b) - turns[p].scaledArmA * omegaAt(omega, a);
     // The new force max(0, start - scaledVelocity) is start - min(start, scaledVelocity): the
     // accumulated force is clamped, not the increment. No test for a zero change: the branch
     // would be unpredictable, and adding zero is cheaper than a mispredicted jump.
@@ -190,26 +295,53 @@ GaussSeidelSolver::SweepResult GaussSeidelSolver::sweep() {
     // velocity, on which a row sharing a body waits, is one subtraction shorter (2% of a
     // pile's step). Its roundings add up over many sweeps, to 4e-12 of the velocities after
     // 2000; in float that would be 6e-4, so float follows the change itself.
-    apply<turning>(p, std::is_same_v<real, double> ? row.scaledTarget - reached : change);
-    forces_[p] = newForce;
-    changes_[p] = change;
-    result.largestChange = std::max(result.largestChange, std::abs(change) * row.response);
-    result.squaredNorm += change * change;
+    const real amount = std::is_same_v<real, double> ? scaledTarget - reached : change;
+    if constexpr (turning) {
+      const real turnA = turns[p].turnA;
+      const real turnB = turns[p].turnB;
+      push(velocity, a, b, row.pushA, row.pushB, amount);
+      omegaAt(omega, a) += turnA * amount;
+      omegaAt(omega, b) += turnB * amount;
+    } else {
+      push(velocity, a, b, row.pushA, row.pushB, amount);
+    }
+    forces[p] = newForce;
+    changes[p] = change;
+    squaredNorm += change * change;
   }
-  return result;
+  return squaredNorm;
 }
 
 template <bool turning>
 void GaussSeidelSolver::conjugateStep(real beta) {
-  for (std::size_t p = 0; p < rows_.size(); ++p) {
-    const real step = beta * direction_[p];
-    direction_[p] = step + changes_[p];
+  const Row* const rows = rows_.data();
+  const Turning* const turns = turning_.data();
+  Vector2* const velocity = velocities_.data();
+  real* const omega = omegas_.data();
+  real* const forces = forces_.data();
+  real* const direction = direction_.data();
+  const real* const changes = changes_.data();
+  const std::size_t n = rows_.size();
+  for (std::size_t p = 0; p < n; ++p) {
+    const Row& row = rows[p];
+    const std::uint32_t a = row.a;
+    const std::uint32_t b = row.b;
+    const real step = beta * direction[p];
+    direction[p] = step + changes[p];
     // The forces stay feasible (the next sweep would project them anyway), and the velocities
     // follow them. Written as the change max(step, -f), the clamp compiles without a branch
     // (max(0, f + step) did not, and mispredicted on rows at the bound).
-    const real change = std::max(step, -forces_[p]);
-    forces_[p] += change;
-    apply<turning>(p, change);
+    const real change = std::max(step, -forces[p]);
+    forces[p] += change;
+    if constexpr (turning) {
+      const real turnA = turns[p].turnA;
+      const real turnB = turns[p].turnB;
+      push(velocity, a, b, row.pushA, row.pushB, change);
+      omegaAt(omega, a) += turnA * change;
+      omegaAt(omega, b) += turnB * change;
+    } else {
+      push(velocity, a, b, row.pushA, row.pushB, change);
+    }
   }
 }
 
@@ -220,8 +352,8 @@ void GaussSeidelSolver::scatter(std::span<const std::uint32_t> island,
   for (std::size_t l = 0; l < bodyCount_; ++l) {
     const std::uint32_t body = globalBody_[l];
     if (body == noBody) continue;  // a fixed body's copy
-    bodies[body].v = bodies_[l].v;
-    bodies[body].omega = bodies_[l].omega;
+    bodies[body].v = velocities_[l];
+    bodies[body].omega = omegas_[l];
     localBody_[body] = noBody;
   }
 }

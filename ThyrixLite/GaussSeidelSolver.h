@@ -47,18 +47,18 @@ class GaussSeidelSolver {
 
  private:
   /// A row in the island's local numbering, with what a sweep needs precomputed: the pushes
-  /// and the scaled normal put one multiplication less on a sweep's critical path.
-  struct Row {
-    std::uint32_t a;  // local body indices
-    std::uint32_t b;
+  /// and the scaled normal put one multiplication less on a sweep's critical path. In double
+  /// a row is one aligned cache line, its vectors aligned for SSE2 operands.
+  struct alignas(sizeof(real) == 8 ? 64 : alignof(real)) Row {
     Vector2 pushA;         // change of A's velocity per unit force, subtracted: n / m_A
     Vector2 pushB;         // of B's, added: n / m_B
     Vector2 scaledNormal;  // n * relaxation / A_kk
     real scaledTarget;     // c * relaxation / A_kk
-    real response;         // A_kk
+    std::uint32_t a;       // local bodies, as byte offsets in velocities_
+    std::uint32_t b;
   };
   /// The turning part of a row, kept apart: islands where no contact has a lever arm (circles
-  /// and borders) never read it.
+  /// and borders) neither read nor write it.
   struct Turning {
     // w = n . (vB - vA) + armB omegaB - armA omegaA: its arms times relaxation / A_kk.
     real scaledArmA;
@@ -66,38 +66,33 @@ class GaussSeidelSolver {
     real turnA;  // change of omegaA per unit force: -armA / IA
     real turnB;  // of omegaB: armB / IB
   };
-  /// A body's velocity in the island's local numbering.
-  struct Body {
-    Vector2 v;
-    real omega;
-  };
-  struct SweepResult {
-    real largestChange = 0;  // the largest |change of a force| * A_kk: a velocity
-    real squaredNorm = 0;    // the sum of the squared changes of the forces
-  };
 
   /// Copies the island into the local rows and bodies, the rows interleaved so that
   /// consecutive ones seldom share a body (see interleaved() in the source).
-  void gather(std::span<const std::uint32_t> island, std::span<const ContactConstraint> rows,
+  /// @return the least A_kk of the rows, NaN if one is NaN.
+  real gather(std::span<const std::uint32_t> island, std::span<const ContactConstraint> rows,
               std::span<const SolverBody> bodies, real relaxation);
   /// One sweep over the rows, forward or backward; records each row's change in changes_.
-  /// Without turning, the rows' lever arms are all zero and are not read.
+  /// Without turning, the rows' lever arms are all zero and are not read. @return the sum of
+  /// the squared changes of the forces.
   template <bool backward, bool turning>
-  SweepResult sweep();
+  real sweep();
+  /// The largest |change of a force| * A_kk of the last sweep: a velocity, the convergence
+  /// measure. Only needed when the sweep's squared changes do not already exclude convergence.
+  [[nodiscard]] real largestChange() const;
   /// Moves every force by beta * direction (kept non-negative), updates the velocities, and
   /// makes the next direction.
   template <bool turning>
   void conjugateStep(real beta);
-  /// Adds the velocities caused by a change of row @p p's force.
-  template <bool turning>
-  void apply(std::size_t p, real change);
   void scatter(std::span<const std::uint32_t> island, std::span<ContactConstraint> rows,
                std::span<SolverBody> bodies);
 
   std::vector<Row> rows_;
-  std::vector<Turning> turning_;  // read only when a row of the island has a lever arm
+  std::vector<Turning> turning_;  // written and read only when a row of the island turns
   bool turningIsland_ = false;
-  std::vector<Body> bodies_;  // the island's bodies: the first bodyCount_
+  std::vector<real> responses_;      // each row's A_kk, for largestChange()
+  std::vector<Vector2> velocities_;  // the island's bodies: the first bodyCount_
+  std::vector<real> omegas_;         // their angular velocities
   std::size_t bodyCount_ = 0;
   std::vector<real> forces_;
   std::vector<real> changes_;              // each force's change in the last sweep
