@@ -72,12 +72,10 @@ int GaussSeidelSolver::solve(std::span<const std::uint32_t> island,
   const real tolerance = settings.gaussSeidelTolerance;
   const real bound = convergenceBound(tolerance, leastResponse, rows_.size());
   const bool accelerate = settings.accelerateGaussSeidel;
-  if (accelerate) {
-    // resize, not assign: assign would reallocate to the exact size at each new largest
-    // island (a growing pile: nearly every step), resize grows geometrically.
-    direction_.resize(rows_.size());
-    std::fill(direction_.begin(), direction_.end(), real(0));
-  }
+  // The first sweep restarts the direction (lastNorm is 0): it needs no zeroing. resize, not
+  // assign: assign would reallocate to the exact size at each new largest island (a growing
+  // pile: nearly every step), resize grows geometrically.
+  if (accelerate) direction_.resize(rows_.size());
   real lastNorm = 0;  // squared norm of the previous sweep's change
   int sweeps = 0;
   while (sweeps < settings.gaussSeidelMaxIterations) {
@@ -98,7 +96,8 @@ int GaussSeidelSolver::solve(std::span<const std::uint32_t> island,
       const real beta = squaredNorm / lastNorm;
       turningIsland_ ? conjugateStep<true>(beta) : conjugateStep<false>(beta);
     } else {  // first sweep, or the change grew: restart along the change itself
-      std::copy(changes_.begin(), changes_.end(), direction_.begin());
+      // Swapped, not copied: the next sweep writes every change anew.
+      std::swap(direction_, changes_);
     }
     lastNorm = squaredNorm;
   }
