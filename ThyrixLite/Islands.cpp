@@ -2,59 +2,49 @@
 
 namespace thyrix {
 
-std::uint32_t Islands::find(std::uint32_t body) {
-  while (parent_[body] != body) {
-    parent_[body] = parent_[parent_[body]];  // path halving
-    body = parent_[body];
-  }
-  return body;
-}
-
 void Islands::reserve(std::size_t bodies, std::size_t rows) {
   parent_.reserve(bodies);
   islandOfBody_.reserve(bodies);
   islandOfRow_.reserve(rows);
-  islandStart_.reserve(rows + 1);
-  cursor_.reserve(rows + 1);
+  islandStart_.reserve(rows + 2);
   contacts_.reserve(rows);
 }
 
-void Islands::build(std::span<const ContactConstraint> rows, std::span<const std::uint8_t> movable,
-                    std::span<const std::uint32_t> bodies) {
-  constexpr std::uint32_t none = ~0u;
-  const auto bodyCount = static_cast<std::uint32_t>(movable.size());
-  if (parent_.size() < bodyCount) {
-    parent_.resize(bodyCount);
-    islandOfBody_.resize(bodyCount);
+Islands::Adder Islands::start(std::size_t bodies, std::size_t rows) {
+  if (parent_.size() < bodies) {
+    parent_.resize(bodies);
+    islandOfBody_.resize(bodies);
   }
-  for (const std::uint32_t body : bodies) {
-    parent_[body] = body;
-    islandOfBody_[body] = none;
-  }
-  for (const ContactConstraint& row : rows) {
-    if (!movable[row.a] || !movable[row.b]) continue;
-    std::uint32_t rootA = find(row.a);
-    std::uint32_t rootB = find(row.b);
-    if (rootA == rootB) continue;
-    if (rootB < rootA) std::swap(rootA, rootB);
-    parent_[rootB] = rootA;
-  }
+  islandOfRow_.resize(rows);
+  return {parent_.data(), islandOfBody_.data(), islandOfRow_.data()};
+}
 
-  // Number the islands in order of their first contact (the contact order is reproducible).
-  islandOfRow_.resize(rows.size());
+void Islands::finish() {
+  // Number the islands in order of their first contact (the contact order is reproducible),
+  // counting each island's rows as they are numbered. Counts are kept one entry late (island
+  // i's count at i + 2), so that the fill's cursors are islandStart_ itself: island i's cursor
+  // is entry i + 1, which ends as its end, the start of island i + 1.
+  const std::size_t rowCount = islandOfRow_.size();
+  std::uint32_t* const islandOfRow = islandOfRow_.data();
+  std::uint32_t* const islandOfBody = islandOfBody_.data();
+  islandStart_.assign(2, 0);
   std::uint32_t islandCount = 0;
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    const ContactConstraint& row = rows[k];
-    const std::uint32_t root = find(movable[row.a] ? row.a : row.b);
-    if (islandOfBody_[root] == none) islandOfBody_[root] = islandCount++;
-    islandOfRow_[k] = islandOfBody_[root];
+  for (std::size_t k = 0; k < rowCount; ++k) {
+    const std::uint32_t root = find(parent_.data(), islandOfRow[k]);
+    if (islandOfBody[root] == none) {
+      islandOfBody[root] = islandCount++;
+      islandStart_.push_back(0);
+    }
+    const std::uint32_t island = islandOfBody[root];
+    islandOfRow[k] = island;
+    ++islandStart_[island + 2];
   }
-  islandStart_.assign(islandCount + 1, 0);
-  for (const std::uint32_t island : islandOfRow_) ++islandStart_[island + 1];
-  for (std::uint32_t i = 0; i < islandCount; ++i) islandStart_[i + 1] += islandStart_[i];
-  cursor_.assign(islandStart_.begin(), islandStart_.end() - 1);
-  contacts_.resize(rows.size());
-  for (std::uint32_t k = 0; k < rows.size(); ++k) contacts_[cursor_[islandOfRow_[k]]++] = k;
+  std::uint32_t* const start = islandStart_.data();
+  for (std::uint32_t i = 0; i < islandCount; ++i) start[i + 2] += start[i + 1];
+  contacts_.resize(rowCount);
+  for (std::size_t k = 0; k < rowCount; ++k)
+    contacts_[start[islandOfRow[k] + 1]++] = static_cast<std::uint32_t>(k);
+  islandStart_.pop_back();  // the entry one late: islandCount + 1 starts remain
 }
 
 }  // namespace thyrix

@@ -2,10 +2,10 @@
 /// @file Islands.h
 /// @brief Groups contacts into islands: sets of movable bodies linked by contacts.
 
-#include <ThyrixLite/ContactSolver.h>
-
+#include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace thyrix {
@@ -13,16 +13,57 @@ namespace thyrix {
 /// Union-find over movable bodies, then a counting sort of the contacts by island. Fixed
 /// bodies do not link islands (they never move). Islands come out in order of their first
 /// contact and list their contacts in increasing order, so the result is reproducible.
+///
+/// The rows are given one by one while the caller visits them (start(), then the Adder's
+/// addBody() and addRow(), then finish()), so that the caller's pass over its contacts also
+/// links the islands. A set's root is always its least body, whatever the order of the links.
 class Islands {
+  static constexpr std::uint32_t none = ~0u;
+
  public:
-  /// Groups @p rows; @p movable tells which bodies can move; @p bodies lists every body the
-  /// rows name (each once), the only ones read (the work is proportional to the rows).
-  void build(std::span<const ContactConstraint> rows, std::span<const std::uint8_t> movable,
-             std::span<const std::uint32_t> bodies);
+  /// Adds bodies and rows to the grouping start() began, through plain pointers (a caller's
+  /// loop keeps them in registers, whatever it stores meanwhile).
+  class Adder {
+   public:
+    /// Adds body @p body, alone so far (each body a row names, once, before its first row).
+    void addBody(std::uint32_t body) {
+      parent_[body] = body;
+      islandOfBody_[body] = none;
+    }
+    /// Adds row @p k (rows in increasing order, from 0) between bodies @p a and @p b, whether
+    /// each can move given by @p movableA and @p movableB.
+    void addRow(std::size_t k, std::uint32_t a, std::uint32_t b, bool movableA, bool movableB) {
+      // The body whose island the row joins; its root is looked up in finish().
+      islandOfRow_[k] = movableA ? a : b;
+      if (movableA && movableB) link(a, b);
+    }
+
+   private:
+    friend class Islands;
+    Adder(std::uint32_t* parent, std::uint32_t* islandOfBody, std::uint32_t* islandOfRow)
+        : parent_(parent), islandOfBody_(islandOfBody), islandOfRow_(islandOfRow) {}
+    /// Joins the sets of bodies @p a and @p b; the root of the union is the lesser root.
+    void link(std::uint32_t a, std::uint32_t b) {
+      std::uint32_t rootA = find(parent_, a);
+      std::uint32_t rootB = find(parent_, b);
+      if (rootA == rootB) return;
+      if (rootB < rootA) std::swap(rootA, rootB);
+      parent_[rootB] = rootA;
+    }
+
+    std::uint32_t* parent_;
+    std::uint32_t* islandOfBody_;
+    std::uint32_t* islandOfRow_;
+  };
+
+  /// Begins a grouping of @p rows rows among up to @p bodies bodies; @return what adds them.
+  Adder start(std::size_t bodies, std::size_t rows);
+  /// Numbers the islands and sorts by island the rows added since start().
+  void finish();
 
   /// Makes room for @p bodies bodies and @p rows contacts without further allocation.
   void reserve(std::size_t bodies, std::size_t rows);
-  /// Number of islands found by the last build.
+  /// Number of islands found by the last finish().
   [[nodiscard]] std::size_t count() const {
     return islandStart_.empty() ? 0 : islandStart_.size() - 1;
   }
@@ -32,13 +73,19 @@ class Islands {
   }
 
  private:
-  std::uint32_t find(std::uint32_t body);
+  /// The root of @p body's set in the forest @p parent, halving the path on the way.
+  static std::uint32_t find(std::uint32_t* parent, std::uint32_t body) {
+    while (parent[body] != body) {
+      parent[body] = parent[parent[body]];  // path halving
+      body = parent[body];
+    }
+    return body;
+  }
 
   std::vector<std::uint32_t> parent_;        // union-find forest over bodies
   std::vector<std::uint32_t> islandOfBody_;  // dense island number of each root, or none
-  std::vector<std::uint32_t> islandOfRow_;
+  std::vector<std::uint32_t> islandOfRow_;   // a body of each row, then its island
   std::vector<std::uint32_t> islandStart_;
-  std::vector<std::uint32_t> cursor_;
   std::vector<std::uint32_t> contacts_;
 };
 

@@ -75,28 +75,43 @@ void Simulator::solveContacts() {
   }
 
   // Only the bodies that rows touch take part (the others keep their velocities): a world of
-  // many bodies with few contacts pays for its contacts, not for its size.
+  // many bodies with few contacts pays for its contacts, not for its size. The islands are
+  // linked as the bodies are touched (one pass over the contacts' bodies), through plain
+  // pointers (the byte stores of movable would make the compiler reload every member).
   ++stamp_;
   touched_.clear();
-  const auto touch = [this](std::uint32_t i) {
-    if (touchedStamp_[i] == stamp_) return;
-    touchedStamp_[i] = stamp_;
+  Islands::Adder islands = islands_.start(objects.size(), rows_.size());
+  const std::uint64_t stamp = stamp_;
+  std::uint64_t* const touchedStamp = touchedStamp_.data();
+  SolverBody* const bodies = bodies_.data();
+  std::uint8_t* const movableBody = movable_.data();
+  const auto touch = [&](std::uint32_t i) {
+    if (touchedStamp[i] == stamp) return;
+    touchedStamp[i] = stamp;
     touched_.push_back(i);
     const PhysicalObject& object = objects[i];
     // A multi-body object answers for itself (general islands): zero here, so the rigid
     // formulas ignore its sides.
-    bodies_[i] =
+    bodies[i] =
         multiBodies_[i] != nullptr
             ? SolverBody{}
             : SolverBody{object.v, object.omega, object.inverseMass(), object.inverseInertia()};
-    movable_[i] = movable(i) ? 1 : 0;
+    movableBody[i] = movable(i) ? 1 : 0;
+    islands.addBody(i);
   };
-  for (const GlobalContactInfo& c : contacts.items_) {
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const GlobalContactInfo& c = contacts.items_[k];
     touch(c.bodyA);
     touch(c.bodyB);
+    islands.addRow(k, c.bodyA, c.bodyB, movableBody[c.bodyA] != 0, movableBody[c.bodyB] != 0);
   }
-  for (const std::uint32_t owner : internalOwner_) touch(owner);
-  islands_.build(rows_, movable_, touched_);
+  for (std::size_t j = 0; j < internal_.size(); ++j) {
+    const std::uint32_t owner = internalOwner_[j];
+    touch(owner);
+    islands.addRow(contacts.size() + j, owner, owner, movableBody[owner] != 0,
+                   movableBody[owner] != 0);
+  }
+  islands_.finish();
   statistics_.islands = islands_.count();
   for (std::size_t i = 0; i < islands_.count(); ++i) {
     const auto island = islands_.island(i);
