@@ -220,6 +220,11 @@ inline Vector2& at(Vector2* velocity, std::uint32_t offset) {
   return *reinterpret_cast<Vector2*>(reinterpret_cast<char*>(velocity) + offset);
 }
 
+/// @p v as the array of its two coordinates (read in double only: a float build compiles the
+/// SSE2 paths, which it never takes, through these).
+inline double* coordinates(Vector2& v) { return reinterpret_cast<double*>(&v); }
+inline const double* coordinates(const Vector2& v) { return reinterpret_cast<const double*>(&v); }
+
 /// The angular velocity in @p omega of the body at byte offset @p offset of the velocities.
 inline real& omegaAt(real* omega, std::uint32_t offset) { return omega[offset / sizeof(Vector2)]; }
 
@@ -232,11 +237,11 @@ inline void push(Vector2* velocity, std::uint32_t a, std::uint32_t b, const Vect
                  const Vector2& pushB, real amount) {
 #if defined(__SSE2__)
   if constexpr (std::is_same_v<real, double>) {
-    const __m128d k = _mm_set1_pd(amount);
-    const __m128d byA = _mm_mul_pd(_mm_load_pd(&pushA.x), k);
-    const __m128d byB = _mm_mul_pd(_mm_load_pd(&pushB.x), k);
-    double* const va = &at(velocity, a).x;
-    double* const vb = &at(velocity, b).x;
+    const __m128d k = _mm_set1_pd(static_cast<double>(amount));
+    const __m128d byA = _mm_mul_pd(_mm_load_pd(coordinates(pushA)), k);
+    const __m128d byB = _mm_mul_pd(_mm_load_pd(coordinates(pushB)), k);
+    double* const va = coordinates(at(velocity, a));
+    double* const vb = coordinates(at(velocity, b));
     _mm_storeu_pd(va, _mm_sub_pd(_mm_loadu_pd(va), byA));
     _mm_storeu_pd(vb, _mm_add_pd(_mm_loadu_pd(vb), byB));
     return;
@@ -271,10 +276,11 @@ real GaussSeidelSolver::sweep() {
     real scaledVelocity;
 #if defined(__SSE2__)
     if constexpr (std::is_same_v<real, double>) {
-      const __m128d product = _mm_mul_pd(
-          _mm_load_pd(&row.scaledNormal.x),
-          _mm_sub_pd(_mm_loadu_pd(&at(velocity, b).x), _mm_loadu_pd(&at(velocity, a).x)));
-      scaledVelocity = _mm_cvtsd_f64(_mm_add_sd(product, _mm_unpackhi_pd(product, product)));
+      const __m128d product = _mm_mul_pd(_mm_load_pd(coordinates(row.scaledNormal)),
+                                         _mm_sub_pd(_mm_loadu_pd(coordinates(at(velocity, b))),
+                                                    _mm_loadu_pd(coordinates(at(velocity, a)))));
+      scaledVelocity =
+          static_cast<real>(_mm_cvtsd_f64(_mm_add_sd(product, _mm_unpackhi_pd(product, product))));
     } else
 #endif
     {
