@@ -263,6 +263,8 @@ real GaussSeidelSolver::sweep() {
   real* const omega = omegas_.data();
   real* const forces = forces_.data();
   real* const changes = changes_.data();
+  // Two rows an iteration: half the loop overhead (the rows still go one after the other).
+#pragma GCC unroll 2
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t p = backward ? n - 1 - i : i;
     const Row& row = rows[p];
@@ -327,6 +329,8 @@ void GaussSeidelSolver::conjugateStep(real beta) {
   real* const direction = direction_.data();
   const real* const changes = changes_.data();
   const std::size_t n = rows_.size();
+  // Two rows an iteration: half the loop overhead (the rows still go one after the other).
+#pragma GCC unroll 2
   for (std::size_t p = 0; p < n; ++p) {
     const Row& row = rows[p];
     const std::uint32_t a = row.a;
