@@ -431,23 +431,14 @@ void Simulator::indexContacts() {
   clearContactLists();
   objectContacts_.resize(2 * contacts.size());
   // objectContactCursor_ is zero for every object between calls: count, listing each object
-  // at its first contact. Without a branch (which contact first names an object is random to
-  // the predictor): every body is written at the list's end, which advances for a new one;
-  // the list is sized ahead for every object that can be named, plus that last write.
-  const std::size_t nameable = std::min(objects.size(), 2 * contacts.size());
-  listedObjects_.resize(nameable + 1);
-  std::uint32_t* const cursor = objectContactCursor_.data();
-  std::uint32_t* const listed = listedObjects_.data();
-  std::size_t listedCount = 0;
-  const auto count = [&](std::uint32_t body) {
-    listed[listedCount] = body;
-    listedCount += std::size_t{cursor[body]++ == 0};
+  // at its first contact.
+  const auto count = [this](std::uint32_t body) {
+    if (objectContactCursor_[body]++ == 0) listedObjects_.push_back(body);
   };
   for (const GlobalContactInfo& c : contacts.items_) {
     count(c.bodyA);
     count(c.bodyB);
   }
-  listedObjects_.resize(listedCount);
   std::uint32_t offset = 0;
   for (const std::uint32_t i : listedObjects_) {
     const std::uint32_t n = objectContactCursor_[i];

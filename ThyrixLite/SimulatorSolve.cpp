@@ -5,11 +5,8 @@
 #include <ThyrixLite/Simulator.h>
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
-#include <cstdint>
 #include <numeric>
-#include <type_traits>
 
 namespace thyrix {
 
@@ -36,7 +33,6 @@ void Simulator::solveContacts() {
   }
 
   const real correction = settings_.penetrationCorrection;
-  using Bits = std::conditional_t<sizeof(real) == 8, std::uint64_t, std::uint32_t>;
   rows_.resize(contacts.size() + internal_.size());
   for (std::size_t k = 0; k < contacts.size(); ++k) {
     const GlobalContactInfo& c = contacts.items_[k];
@@ -54,13 +50,7 @@ void Simulator::solveContacts() {
                    ? 0
                    : cross(c.point - c.objectB->r, c.normal);
     // Overlap: separate at a fraction of the depth per step; gap: approach at most by the gap.
-    // The numerator chosen by a mask, not a branch (overlaps and gaps mix at random: the
-    // branch mispredicted for a third of the contacts).
-    const Bits overlap = Bits{0} - Bits{c.depth > 0};
-    const real numerator =
-        std::bit_cast<real>((std::bit_cast<Bits>(correction * c.depth) & overlap) |
-                            (std::bit_cast<Bits>(c.depth) & ~overlap));
-    row.target = numerator / dt;
+    row.target = c.depth > 0 ? correction * c.depth / dt : c.depth / dt;
     row.force = 0;
   }
   // A joint limit is a row of its object alone; its Jacobian is the object's business.
@@ -95,20 +85,6 @@ void Simulator::solveContacts() {
   std::uint64_t* const touchedStamp = touchedStamp_.data();
   SolverBody* const bodies = bodies_.data();
   std::uint8_t* const movableBody = movable_.data();
-  // PhysicalObject::inverseMass() and inverseInertia(), with the last quotients reused for a
-  // body of the same mass or inertia (the same bits: the same quotient): a crowd's bodies are
-  // mostly alike, and a division is slow.
-  real lastMass = 1;
-  real lastInverseMass = 1;
-  real lastInertia = 1;
-  real lastInverseInertia = 1;
-  const auto reciprocal = [](real x, real& last, real& inverse) {
-    if (std::bit_cast<Bits>(x) != std::bit_cast<Bits>(last)) {
-      last = x;
-      inverse = 1 / x;
-    }
-    return inverse;
-  };
   const auto touch = [&](std::uint32_t i) {
     if (touchedStamp[i] == stamp) return;
     touchedStamp[i] = stamp;
@@ -119,10 +95,7 @@ void Simulator::solveContacts() {
     bodies[i] =
         multiBodies_[i] != nullptr
             ? SolverBody{}
-            : SolverBody{
-                  object.v, object.omega,
-                  object.fixed ? real(0) : reciprocal(object.m, lastMass, lastInverseMass),
-                  object.fixed ? real(0) : reciprocal(object.I, lastInertia, lastInverseInertia)};
+            : SolverBody{object.v, object.omega, object.inverseMass(), object.inverseInertia()};
     movableBody[i] = movable(i) ? 1 : 0;
     islands.addBody(i);
   };
