@@ -4,9 +4,6 @@
 #include <cmath>
 #include <limits>
 #include <type_traits>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace thyrix {
 namespace {
@@ -220,35 +217,18 @@ inline Vector2& at(Vector2* velocity, std::uint32_t offset) {
   return *reinterpret_cast<Vector2*>(reinterpret_cast<char*>(velocity) + offset);
 }
 
-/// @p v as the array of its two coordinates (read in double only: a float build compiles the
-/// SSE2 paths, which it never takes, through these).
-inline double* coordinates(Vector2& v) { return reinterpret_cast<double*>(&v); }
-inline const double* coordinates(const Vector2& v) { return reinterpret_cast<const double*>(&v); }
-
 /// The angular velocity in @p omega of the body at byte offset @p offset of the velocities.
 inline real& omegaAt(real* omega, std::uint32_t offset) { return omega[offset / sizeof(Vector2)]; }
 
 /// Adds to @p velocity (the island's) the change @p amount of a row's force through its bodies
-/// at byte offsets @p a and @p b and its pushes: B's velocity is read after A's is stored (the same
-/// result if they were one body). In double with SSE2, by two lanes at once (the same operations,
-/// the same bits); everything the row gives is read before the first store, which the compiler must
-/// take for one that may change anything.
+/// at byte offsets @p a and @p b and its pushes (B's velocity read after A's is stored: the same
+/// result if they were one body). Everything the row gives is read before the first store.
 inline void push(Vector2* velocity, std::uint32_t a, std::uint32_t b, const Vector2& pushA,
                  const Vector2& pushB, real amount) {
-#if defined(__SSE2__)
-  if constexpr (std::is_same_v<real, double>) {
-    const __m128d k = _mm_set1_pd(static_cast<double>(amount));
-    const __m128d byA = _mm_mul_pd(_mm_load_pd(coordinates(pushA)), k);
-    const __m128d byB = _mm_mul_pd(_mm_load_pd(coordinates(pushB)), k);
-    double* const va = coordinates(at(velocity, a));
-    double* const vb = coordinates(at(velocity, b));
-    _mm_storeu_pd(va, _mm_sub_pd(_mm_loadu_pd(va), byA));
-    _mm_storeu_pd(vb, _mm_add_pd(_mm_loadu_pd(vb), byB));
-    return;
-  }
-#endif
-  at(velocity, a) -= pushA * amount;
-  at(velocity, b) += pushB * amount;
+  const Vector2 byA = pushA * amount;
+  const Vector2 byB = pushB * amount;
+  at(velocity, a) -= byA;
+  at(velocity, b) += byB;
 }
 
 }  // namespace
@@ -273,21 +253,8 @@ real GaussSeidelSolver::sweep() {
     const real scaledTarget = row.scaledTarget;
     const real force = forces[p];
     const real start = force + scaledTarget;
-    // The normal velocity w times relaxation / A_kk, a force: in double the velocity
-    // difference and the products by two lanes at once (the same operations, the same bits).
-    real scaledVelocity;
-#if defined(__SSE2__)
-    if constexpr (std::is_same_v<real, double>) {
-      const __m128d product = _mm_mul_pd(_mm_load_pd(coordinates(row.scaledNormal)),
-                                         _mm_sub_pd(_mm_loadu_pd(coordinates(at(velocity, b))),
-                                                    _mm_loadu_pd(coordinates(at(velocity, a)))));
-      scaledVelocity =
-          static_cast<real>(_mm_cvtsd_f64(_mm_add_sd(product, _mm_unpackhi_pd(product, product))));
-    } else
-#endif
-    {
-      scaledVelocity = dot(row.scaledNormal, at(velocity, b) - at(velocity, a));
-    }
+    // The normal velocity w times relaxation / A_kk, a force.
+    real scaledVelocity = dot(row.scaledNormal, at(velocity, b) - at(velocity, a));
     if constexpr (turning)
       scaledVelocity +=
           turns[p].scaledArmB * omegaAt(omega, b) - turns[p].scaledArmA * omegaAt(omega, a);

@@ -48,7 +48,7 @@ class GaussSeidelSolver {
  private:
   /// A row in the island's local numbering, with what a sweep needs precomputed: the pushes
   /// and the scaled normal put one multiplication less on a sweep's critical path. In double
-  /// a row is one aligned cache line, its vectors aligned for SSE2 operands.
+  /// a row is one aligned cache line (A_kk, read only for the convergence test, is apart).
   struct alignas(sizeof(real) == 8 ? 64 : alignof(real)) Row {
     Vector2 pushA;         // change of A's velocity per unit force, subtracted: n / m_A
     Vector2 pushB;         // of B's, added: n / m_B
