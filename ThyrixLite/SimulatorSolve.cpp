@@ -252,9 +252,22 @@ void Simulator::solveIsland(std::span<const std::uint32_t> island) {
     ++statistics_.baraffFallbacks;
   }
   if (settings_.warmStart && previousSolved_) {
-    // The forces alone: Gauss-Seidel adds their velocities as it copies the island.
-    for (const std::uint32_t k : island)
-      rows_[k].force = previousForce(contacts.items_[k], k, previousHint_);
+    // The forces alone: Gauss-Seidel adds their velocities as it copies the island. The last
+    // step's contact after the one found last is previousForce()'s first guess, and usually
+    // the one: tried here, without the call.
+    const GlobalContactInfo* const previous = previousContacts_.data();
+    const std::size_t previousCount = previousContacts_.size();
+    for (const std::uint32_t k : island) {
+      const GlobalContactInfo& c = contacts.items_[k];
+      const std::size_t hint = previousHint_;
+      if (hint < previousCount && previous[hint].shapeA == c.shapeA &&
+          previous[hint].shapeB == c.shapeB && previous[hint].feature == c.feature) {
+        previousHint_ = hint + 1;
+        rows_[k].force = previous[hint].force;
+      } else {
+        rows_[k].force = previousForce(c, k, previousHint_);
+      }
+    }
   }
   statistics_.gaussSeidelSweeps +=
       static_cast<std::size_t>(gaussSeidel_.solve(island, rows_, bodies_, settings_));
