@@ -1,7 +1,6 @@
 #include <ThyrixLite/SelfCollisionFilter.h>
 
 #include <algorithm>
-#include <atomic>
 
 namespace thyrix {
 
@@ -50,9 +49,19 @@ void SelfCollisionFilter::assign(std::span<const std::uint32_t> partOf,
     for (std::uint32_t j = apartStart_[own]; j < apartStart_[own + 1]; ++j) mark(apart_[j]);
     apartNear_[k] = word;
   }
-  // One counter for every filter of the program (simulators may run in several threads).
-  static std::atomic<std::uint64_t> lastStamp{0};
-  stamp_ = lastStamp.fetch_add(1, std::memory_order_relaxed) + 1;
+  ++stamp_;
+}
+
+SelfCollisionFilter& SelfCollisionFilter::operator=(const SelfCollisionFilter& other) {
+  // Past both stamps: this filter's stamp grows at every change, whichever rules it takes.
+  // Copied first, then swapped in: a copy that fails leaves this filter as it was.
+  SelfCollisionFilter copy(other);
+  partOf_.swap(copy.partOf_);
+  apartNear_.swap(copy.apartNear_);
+  apartStart_.swap(copy.apartStart_);
+  apart_.swap(copy.apart_);
+  stamp_ = std::max(stamp_, other.stamp_) + 1;
+  return *this;
 }
 
 }  // namespace thyrix

@@ -26,9 +26,10 @@ class SelfCollisionFilter {
  public:
   SelfCollisionFilter() = default;
   // Copies only (no moves, which would leave a moved-from filter with rules other than its
-  // stamp says): the rules are set once per object.
+  // stamp says): the rules are set once per object. An assignment gives a new stamp (see
+  // stamp()).
   SelfCollisionFilter(const SelfCollisionFilter&) = default;
-  SelfCollisionFilter& operator=(const SelfCollisionFilter&) = default;
+  SelfCollisionFilter& operator=(const SelfCollisionFilter& other);
   ~SelfCollisionFilter() = default;
 
   /// Sets the rules: primitive k (in the object's `primitives()` order) belongs to part
@@ -64,9 +65,11 @@ class SelfCollisionFilter {
     return listedPartsMayTouch(a, b);
   }
 
-  /// Names the rules: a new number at every assign() (unique in the program), 0 before the
-  /// first. Two filters with the same stamp answer alike, so a reader that kept what the rules
-  /// said (the simulator's broad phase) knows whether they changed.
+  /// Counts this filter's changes: 0 before the first, larger after every assign() or
+  /// assignment from another filter (a copy starts at its source's). A reader that kept what
+  /// this filter's rules said (the simulator's broad phase) knows whether they changed. Its own
+  /// history only, no counter shared by the program: the same program gives the same stamps,
+  /// however many simulators run around it.
   [[nodiscard]] std::uint64_t stamp() const { return stamp_; }
 
   /// The part of primitive @p k (in `primitives()` order); k itself before assign().

@@ -563,6 +563,7 @@ class RuledAgent : public Agent {
     }
     selfCollision_.assign(parts, apart);
   }
+  void setFilter(const SelfCollisionFilter& filter) { selfCollision_ = filter; }
 };
 
 TEST_P(ArticulatedAgentTest, FoldedChainAmongManyShapesTouchesItselfAsTheRulesSay) {
@@ -630,6 +631,62 @@ TEST(ArticulatedAgentRules, ComposedBodiesInARowTouchTheirNeighboursNotThemselve
       EXPECT_GT(withNext, 0) << "body " << k;
     }
   }
+}
+
+TEST(ArticulatedAgentRules, AFiltersStampFollowsItsOwnChangesOnly) {
+  // DESIGN.md: no global mutable state. A filter's stamp counts its own changes, whatever
+  // other filters do (an agent built here sets its own), and grows at every change, copies
+  // assigned included, so that a simulator that kept it sees every change.
+  const auto arm = makeArm(3);
+  const std::vector<std::uint32_t> parts = {0, 1, 2};
+  const std::vector<std::pair<std::uint32_t, std::uint32_t>> apart = {{0, 1}};
+  SelfCollisionFilter filter;
+  EXPECT_EQ(filter.stamp(), 0u);
+  filter.assign(parts, apart);
+  EXPECT_EQ(filter.stamp(), 1u) << "another filter's rules moved this filter's stamp";
+  SelfCollisionFilter other;
+  other.assign(parts, {});
+  other.assign(parts, {});
+  other.assign(parts, {});
+  const SelfCollisionFilter copy(other);
+  EXPECT_EQ(copy.stamp(), other.stamp());
+  const std::uint64_t before = filter.stamp();
+  filter = other;
+  EXPECT_GT(filter.stamp(), before);
+  EXPECT_TRUE(filter.mayTouch(0, 1)) << "the rules assigned";
+  other = copy;  // the same rules: still a change of this filter
+  EXPECT_GT(other.stamp(), copy.stamp());
+}
+
+TEST_P(ArticulatedAgentTest, RulesAssignedBackFromACopyAreFollowed) {
+  // The folded chain among many shapes (the sweep's path): every part apart, then the usual
+  // rules back as a copy of the filter kept from before (an assignment, not assign()).
+  Simulator simulator(real(0.01));
+  simulator.setContactSolver(GetParam());
+  for (int k = 0; k < 60; ++k) {
+    auto& circle = simulator.registerObject(std::make_unique<Circle>(real(0.3), 1));
+    circle.r = {real(k), -40};
+    circle.fixed = true;
+  }
+  auto& agent = simulator.registerObject(std::make_unique<RuledAgent>(
+      std::vector<ArticulatedBasePart>{ArticulatedBasePart::circle(real(0.5), 2)},
+      std::vector<ArticulatedLimb>{
+          ArticulatedLimb::chain({real(0.5), 0}, 5, real(0.8), real(0.15), real(0.5))}));
+  for (int i = 1; i < 5; ++i) agent.setJointTorque(i, real(0.3));
+  const SelfCollisionFilter usual = agent.selfCollision();
+  agent.setRules(true);
+  int self = 0;
+  for (int step = 0; step < 300; ++step) {
+    simulator.advanceTime();
+    self += selfContacts(agent);
+  }
+  EXPECT_EQ(self, 0) << "every part is apart from every other";
+  agent.setFilter(usual);
+  for (int step = 0; step < 300; ++step) {
+    simulator.advanceTime();
+    self += selfContacts(agent);
+  }
+  EXPECT_GT(self, 0) << "the folded chain should touch itself under the usual rules";
 }
 
 TEST(ArticulatedAgentRules, NearPairsOfAFilterAnswerAsTheirPartsLists) {
