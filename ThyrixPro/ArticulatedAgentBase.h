@@ -167,9 +167,12 @@ class ArticulatedAgentBase : public MultiBodyObject {
     wrench.y += force.x;
     wrench.z += force.y;
   }
-  /// The same as `applyLinkForce(b, force, centerOfMass(b))`, bit for bit while the pose is
-  /// finite (the lever arm is then (+0, +0), whose cross product with @p force is added as
-  /// applyLinkForce() adds it), without reading the pose: a weight on every link in every step.
+  /// Adds the world force @p force (N) applied at the centre of mass of body @p b (-1 the base,
+  /// else a link) for the next step; reset after it, like `externalForce`. A weight, say: no
+  /// moment, and the pose is not read, so it is cheaper than
+  /// `applyLinkForce(b, force, centerOfMass(b))`, which gives the same bits while the pose is
+  /// finite (its lever arm is then (+0, +0); with a non-finite pose that call throws for
+  /// ".worldPoint", this one does not look).
   /// @throws InvalidArgument naming "ArticulatedAgentBase.body" unless a body of this agent,
   /// or ".force" unless finite
   void applyLinkForceAtCenterOfMass(int b, Vector2 force) {
@@ -181,9 +184,11 @@ class ArticulatedAgentBase : public MultiBodyObject {
     wrench.y += force.x;
     wrench.z += force.y;
   }
-  /// applyLinkForceAtCenterOfMass(i, force) for every link i (not the base), bit for bit: the
-  /// same force on each link, e.g. the weight of links of equal mass.
-  /// @throws InvalidArgument naming "ArticulatedAgentBase.force" unless finite
+  /// Adds the world force @p force (N) at the centre of mass of every link (the base excepted)
+  /// for the next step, as applyLinkForceAtCenterOfMass(i, force) for each link i would (the
+  /// same bits): the weight of links of equal mass, say. The base's own weight goes to
+  /// `externalForce` or applyLinkForceAtCenterOfMass(base, ...).
+  /// @throws InvalidArgument naming "ArticulatedAgentBase.force" unless finite (nothing added)
   void applyForceAtEveryLinkCenterOfMass(Vector2 force);
 
   // --- proprioception and poses --------------------------------------------------------------
