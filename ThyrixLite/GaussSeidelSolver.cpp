@@ -179,7 +179,9 @@ real GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
                 c.normal * inverseScaled,           c.target * inverseScaled,
                 a * std::uint32_t{sizeof(Vector2)}, b * std::uint32_t{sizeof(Vector2)}};
     responses_[q] = response;
-    if (!(response >= leastResponse)) leastResponse = response;
+    // A NaN, once taken, stays: a later row's response must not replace it (the least of the
+    // rows after a NaN could exceed an A_kk before it, and the bound would then be wrong).
+    if (response < leastResponse || std::isnan(response)) leastResponse = response;
     forces_[q] = force;
     if (turning) {
       turning_[q] = turningOf(c, bodyA, bodyB, inverseScaled);

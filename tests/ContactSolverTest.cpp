@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -274,6 +275,33 @@ TEST(GaussSeidelSolver, AccelerationConvergesFasterAlongAColumn) {
   // Both converge to the exact answer given enough sweeps.
   EXPECT_LT(columnError(10, 5000, true), test::isFloat ? real(1e-4) : real(1e-9));
   EXPECT_LT(columnError(10, 5000, false), test::isFloat ? real(1e-4) : real(1e-9));
+}
+
+TEST(GaussSeidelSolver, ConvergenceTestSkipsARowWithANaNResponse) {
+  // The sweeps stop when the largest |change| * A_kk is within the tolerance, a NaN product
+  // (a body of infinite inverse inertia touched through its centre: 0 * inf) left out. A NaN
+  // A_kk must not hide a smaller A_kk from the squared norm's shortcut (convergenceBound):
+  // row 0 (A_kk 1e-6) changes its force by 100, a velocity of only 1e-4, and row 2's larger
+  // A_kk, after the NaN, must not make that change look like a velocity of 100.
+  const real inf = std::numeric_limits<real>::infinity();
+  std::vector<SolverBody> bodies{{{}, 0, 0, 0},           // the ground, fixed
+                                 {{}, 0, real(1e-6), 0},  // heavy: A_kk 1e-6
+                                 {{}, 0, 1, inf},         // A_kk NaN (inf * 0)
+                                 {{}, 0, 1, 0}};          // A_kk 1
+  std::vector<ContactConstraint> rows{
+      {0, 1, {0, 1}, 0, 0, real(1e-4), 0}, {0, 2, {0, 1}, 0, 0, 0, 0}, {0, 3, {0, 1}, 0, 0, 0, 0}};
+  ASSERT_TRUE(std::isnan(rows[1].selfResponse(bodies[0], bodies[2])));
+  const std::vector<std::uint32_t> island{0, 1, 2};
+  ContactSolverSettings settings;
+  settings.gaussSeidelTolerance = real(1e-3);
+  for (const bool accelerate : {true, false}) {
+    settings.accelerateGaussSeidel = accelerate;
+    std::vector<ContactConstraint> solved = rows;
+    std::vector<SolverBody> moved = bodies;
+    // The first sweep's largest change * A_kk is 1e-4: converged at once.
+    EXPECT_EQ(GaussSeidelSolver{}.solve(island, solved, moved, settings), 1);
+    EXPECT_NEAR(solved[0].force, 100, real(1e-3));
+  }
 }
 
 TEST(BaraffSolver, RedundantContactsOfAFlatCapsuleGiveTheUniqueVelocity) {
