@@ -32,7 +32,9 @@ namespace thyrix {
 class GaussSeidelSolver {
  public:
   /// Solves the rows listed in @p island (forces into the rows, velocities into @p bodies).
-  /// @return the number of sweeps done.
+  /// An island has at most 2^27 rows (2^28 with float): its rows name their bodies, up to two
+  /// each, by 32-bit byte offsets of 2D velocities, which a larger island would wrap (not
+  /// checked). @return the number of sweeps done.
   int solve(std::span<const std::uint32_t> island, std::span<ContactConstraint> rows,
             std::span<SolverBody> bodies, const ContactSolverSettings& settings);
 
@@ -54,7 +56,7 @@ class GaussSeidelSolver {
     Vector2 pushB;         // of B's, added: n / m_B
     Vector2 scaledNormal;  // n * relaxation / A_kk
     real scaledTarget;     // c * relaxation / A_kk
-    std::uint32_t a;       // local bodies, as byte offsets in velocities_
+    std::uint32_t a;       // local bodies, as byte offsets in velocities_ (see solve())
     std::uint32_t b;
   };
   /// The turning part of a row, kept apart: islands where no contact has a lever arm (circles
