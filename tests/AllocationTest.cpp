@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstdlib>
 #include <new>
 #include <vector>
@@ -64,6 +65,24 @@ TEST(AllocationCounter, CountsAllocations) {
   std::vector<int> grown;
   grown.reserve(static_cast<std::size_t>(::testing::UnitTest::GetInstance()->random_seed()) + 10);
   EXPECT_EQ(test::allocationCount() - before, 1);
+}
+
+TEST(AllocationCounter, CountsOverAlignedAllocations) {
+  // Over-aligned types (GaussSeidelSolver's rows are cache lines: alignas(64)) are allocated
+  // through the aligned operator new, which must be counted too.
+  struct alignas(64) Line {
+    double words[8];
+  };
+  const long before = test::allocationCount();
+  const long liveBefore = test::liveHeapBytes();
+  {
+    std::vector<Line> lines;
+    lines.reserve(static_cast<std::size_t>(::testing::UnitTest::GetInstance()->random_seed()) + 10);
+    EXPECT_EQ(test::allocationCount() - before, 1);
+    EXPECT_GE(test::liveHeapBytes() - liveBefore, static_cast<long>(10 * sizeof(Line)));
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(lines.data()) % alignof(Line), 0u);
+  }
+  EXPECT_EQ(test::liveHeapBytes(), liveBefore);
 }
 
 INSTANTIATE_TEST_SUITE_P(BothSolvers, AllocationTest,
