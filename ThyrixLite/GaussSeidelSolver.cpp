@@ -5,6 +5,14 @@
 #include <limits>
 #include <type_traits>
 
+// Unrolling a loop by two, where the compiler takes the request (GCC and Clang); others
+// (MSVC would warn about an unknown pragma) unroll as they see fit.
+#if defined(__GNUC__)
+#define THYRIX_UNROLL_TWO _Pragma("GCC unroll 2")
+#else
+#define THYRIX_UNROLL_TWO
+#endif
+
 namespace thyrix {
 namespace {
 
@@ -246,7 +254,7 @@ real GaussSeidelSolver::sweep() {
   real* const forces = forces_.data();
   real* const changes = changes_.data();
   // Two rows an iteration: half the loop overhead (the rows still go one after the other).
-#pragma GCC unroll 2
+  THYRIX_UNROLL_TWO
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t p = backward ? n - 1 - i : i;
     const Row& row = rows[p];
@@ -299,7 +307,7 @@ void GaussSeidelSolver::conjugateStep(real beta) {
   const real* const changes = changes_.data();
   const std::size_t n = rows_.size();
   // Two rows an iteration: half the loop overhead (the rows still go one after the other).
-#pragma GCC unroll 2
+  THYRIX_UNROLL_TWO
   for (std::size_t p = 0; p < n; ++p) {
     const Row& row = rows[p];
     const std::uint32_t a = row.a;
@@ -360,3 +368,5 @@ int GaussSeidelSolver::solveMatrix(std::span<const real> matrix, std::span<const
 }
 
 }  // namespace thyrix
+
+#undef THYRIX_UNROLL_TWO
