@@ -24,11 +24,15 @@ namespace thyrix {
 /// used to decide. Without assign(), every pair of different primitives may touch.
 class SelfCollisionFilter {
  public:
+  // Copies only, no moves (a moved-from filter would keep a stamp its rules no longer
+  // match): the rules are set once per object.
+
+  /// A filter without rules: every pair of different primitives may touch.
   SelfCollisionFilter() = default;
-  // Copies only (no moves, which would leave a moved-from filter with rules other than its
-  // stamp says): the rules are set once per object. An assignment gives a new stamp (see
-  // stamp()).
-  SelfCollisionFilter(const SelfCollisionFilter&) = default;
+  /// A filter with the rules of @p other, and its stamp (the same rules).
+  SelfCollisionFilter(const SelfCollisionFilter& other) = default;
+  /// Takes the rules of @p other, with a stamp new for this filter (see stamp()); unchanged if
+  /// the copy fails.
   SelfCollisionFilter& operator=(const SelfCollisionFilter& other);
   ~SelfCollisionFilter() = default;
 
