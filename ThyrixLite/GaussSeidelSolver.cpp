@@ -230,15 +230,29 @@ inline Vector2& at(Vector2* velocity, std::uint32_t offset) {
 /// The angular velocity in @p omega of the body at byte offset @p offset of the velocities.
 inline real& omegaAt(real* omega, std::uint32_t offset) { return omega[offset / sizeof(Vector2)]; }
 
-/// Adds to @p velocity (the island's) the change @p amount of a row's force through its bodies
-/// at byte offsets @p a and @p b and its pushes (B's velocity read after A's is stored: the same
-/// result if they were one body). Everything the row gives is read before the first store.
-inline void push(Vector2* velocity, std::uint32_t a, std::uint32_t b, const Vector2& pushA,
-                 const Vector2& pushB, real amount) {
-  const Vector2 byA = pushA * amount;
-  const Vector2 byB = pushB * amount;
-  at(velocity, a) -= byA;
-  at(velocity, b) += byB;
+/// Adds to @p velocity and @p omega (the island's) the change @p amount of row @p p's force,
+/// through its bodies at byte offsets `row.a` and `row.b`, its pushes and, in an island that
+/// turns (@p turning), its turns in `turns[p]` (not read otherwise: turning_ is then not
+/// filled). B's velocity is read after A's is stored: the same result if they were one body.
+/// Everything the row gives is read before the first store.
+template <bool turning, class Row, class Turning>
+inline void push(Vector2* velocity, real* omega, const Row& row, const Turning* turns,
+                 std::size_t p, real amount) {
+  const std::uint32_t a = row.a;
+  const std::uint32_t b = row.b;
+  const Vector2 byA = row.pushA * amount;
+  const Vector2 byB = row.pushB * amount;
+  if constexpr (turning) {
+    const real turnA = turns[p].turnA;
+    const real turnB = turns[p].turnB;
+    at(velocity, a) -= byA;
+    at(velocity, b) += byB;
+    omegaAt(omega, a) += turnA * amount;
+    omegaAt(omega, b) += turnB * amount;
+  } else {
+    at(velocity, a) -= byA;
+    at(velocity, b) += byB;
+  }
 }
 
 }  // namespace
@@ -280,15 +294,7 @@ real GaussSeidelSolver::sweep() {
     // pile's step). Its roundings add up over many sweeps, to 4e-12 of the velocities after
     // 2000; in float that would be 6e-4, so float follows the change itself.
     const real amount = std::is_same_v<real, double> ? scaledTarget - reached : change;
-    if constexpr (turning) {
-      const real turnA = turns[p].turnA;
-      const real turnB = turns[p].turnB;
-      push(velocity, a, b, row.pushA, row.pushB, amount);
-      omegaAt(omega, a) += turnA * amount;
-      omegaAt(omega, b) += turnB * amount;
-    } else {
-      push(velocity, a, b, row.pushA, row.pushB, amount);
-    }
+    push<turning>(velocity, omega, row, turns, p, amount);
     forces[p] = newForce;
     changes[p] = change;
     squaredNorm += change * change;
@@ -309,9 +315,6 @@ void GaussSeidelSolver::conjugateStep(real beta) {
   // Two rows an iteration: half the loop overhead (the rows still go one after the other).
   THYRIX_UNROLL_TWO
   for (std::size_t p = 0; p < n; ++p) {
-    const Row& row = rows[p];
-    const std::uint32_t a = row.a;
-    const std::uint32_t b = row.b;
     const real step = beta * direction[p];
     direction[p] = step + changes[p];
     // The forces stay feasible (the next sweep would project them anyway), and the velocities
@@ -319,15 +322,7 @@ void GaussSeidelSolver::conjugateStep(real beta) {
     // (max(0, f + step) did not, and mispredicted on rows at the bound).
     const real change = std::max(step, -forces[p]);
     forces[p] += change;
-    if constexpr (turning) {
-      const real turnA = turns[p].turnA;
-      const real turnB = turns[p].turnB;
-      push(velocity, a, b, row.pushA, row.pushB, change);
-      omegaAt(omega, a) += turnA * change;
-      omegaAt(omega, b) += turnB * change;
-    } else {
-      push(velocity, a, b, row.pushA, row.pushB, change);
-    }
+    push<turning>(velocity, omega, rows[p], turns, p, change);
   }
 }
 

@@ -566,14 +566,10 @@ class RuledAgent : public Agent {
   void setFilter(const SelfCollisionFilter& filter) { selfCollision_ = filter; }
 };
 
-TEST_P(ArticulatedAgentTest, FoldedChainAmongManyShapesTouchesItselfAsTheRulesSay) {
-  // The folded chain of FoldedChainTouchesItselfWithoutInterpenetrating with 60 circles in a
-  // row far away: more shapes than the broad phase tests pair by pair, strung along x, so
-  // the sweep finds the pairs and leaves out those of shapes that never touch. Rules set
-  // again after registration are followed: no self-contact while every part is apart from
-  // every other, then contacts once the usual rules are back.
-  Simulator simulator(real(0.01));
-  simulator.setContactSolver(GetParam());
+/// The folded chain of FoldedChainTouchesItselfWithoutInterpenetrating with 60 fixed circles
+/// in a row far away: more shapes than the broad phase tests pair by pair, strung along x, so
+/// the sweep finds the pairs and leaves out those of shapes that never touch.
+RuledAgent& addFoldedChainAmongCircles(Simulator& simulator) {
   for (int k = 0; k < 60; ++k) {
     auto& circle = simulator.registerObject(std::make_unique<Circle>(real(0.3), 1));
     circle.r = {real(k), -40};
@@ -584,14 +580,30 @@ TEST_P(ArticulatedAgentTest, FoldedChainAmongManyShapesTouchesItselfAsTheRulesSa
       std::vector<ArticulatedLimb>{
           ArticulatedLimb::chain({real(0.5), 0}, 5, real(0.8), real(0.15), real(0.5))}));
   for (int i = 1; i < 5; ++i) agent.setJointTorque(i, real(0.3));
-  agent.setRules(true);
+  return agent;
+}
+
+/// The self-contacts of @p agent summed over @p steps steps of @p simulator.
+int selfContactsOver(Simulator& simulator, const Agent& agent, int steps) {
   int self = 0;
-  for (int step = 0; step < 300; ++step) {
+  for (int step = 0; step < steps; ++step) {
     simulator.advanceTime();
     self += selfContacts(agent);
   }
-  EXPECT_EQ(self, 0) << "every part is apart from every other";
+  return self;
+}
+
+TEST_P(ArticulatedAgentTest, FoldedChainAmongManyShapesTouchesItselfAsTheRulesSay) {
+  // The folded chain among many shapes (the sweep's path). Rules set again after
+  // registration are followed: no self-contact while every part is apart from every other,
+  // then contacts once the usual rules are back.
+  Simulator simulator(real(0.01));
+  simulator.setContactSolver(GetParam());
+  RuledAgent& agent = addFoldedChainAmongCircles(simulator);
+  agent.setRules(true);
+  EXPECT_EQ(selfContactsOver(simulator, agent, 300), 0) << "every part is apart from every other";
   agent.setRules(false);
+  int self = 0;
   for (int step = 0; step < 300; ++step) {
     simulator.advanceTime();
     self += selfContacts(agent);
@@ -637,7 +649,7 @@ TEST(ArticulatedAgentRules, AFiltersStampFollowsItsOwnChangesOnly) {
   // DESIGN.md: no global mutable state. A filter's stamp counts its own changes, whatever
   // other filters do (an agent built here sets its own), and grows at every change, copies
   // assigned included, so that a simulator that kept it sees every change.
-  const auto arm = makeArm(3);
+  const auto arm = makeArm(3);  // its filter's rules, assigned before this filter's
   const std::vector<std::uint32_t> parts = {0, 1, 2};
   const std::vector<std::pair<std::uint32_t, std::uint32_t>> apart = {{0, 1}};
   SelfCollisionFilter filter;
@@ -663,30 +675,13 @@ TEST_P(ArticulatedAgentTest, RulesAssignedBackFromACopyAreFollowed) {
   // rules back as a copy of the filter kept from before (an assignment, not assign()).
   Simulator simulator(real(0.01));
   simulator.setContactSolver(GetParam());
-  for (int k = 0; k < 60; ++k) {
-    auto& circle = simulator.registerObject(std::make_unique<Circle>(real(0.3), 1));
-    circle.r = {real(k), -40};
-    circle.fixed = true;
-  }
-  auto& agent = simulator.registerObject(std::make_unique<RuledAgent>(
-      std::vector<ArticulatedBasePart>{ArticulatedBasePart::circle(real(0.5), 2)},
-      std::vector<ArticulatedLimb>{
-          ArticulatedLimb::chain({real(0.5), 0}, 5, real(0.8), real(0.15), real(0.5))}));
-  for (int i = 1; i < 5; ++i) agent.setJointTorque(i, real(0.3));
+  RuledAgent& agent = addFoldedChainAmongCircles(simulator);
   const SelfCollisionFilter usual = agent.selfCollision();
   agent.setRules(true);
-  int self = 0;
-  for (int step = 0; step < 300; ++step) {
-    simulator.advanceTime();
-    self += selfContacts(agent);
-  }
-  EXPECT_EQ(self, 0) << "every part is apart from every other";
+  EXPECT_EQ(selfContactsOver(simulator, agent, 300), 0) << "every part is apart from every other";
   agent.setFilter(usual);
-  for (int step = 0; step < 300; ++step) {
-    simulator.advanceTime();
-    self += selfContacts(agent);
-  }
-  EXPECT_GT(self, 0) << "the folded chain should touch itself under the usual rules";
+  EXPECT_GT(selfContactsOver(simulator, agent, 300), 0)
+      << "the folded chain should touch itself under the usual rules";
 }
 
 TEST(ArticulatedAgentRules, NearPairsOfAFilterAnswerAsTheirPartsLists) {
