@@ -212,17 +212,11 @@ void ArticulatedAgentBase::placeShapes() {
   // toWorld(link, (half length, 0)) is origin + rotate(axis, (half length, 0)), and the
   // kinematics computed the centre of mass as origin + rotate(axis, centre of mass): the same
   // bits when the two points are, without the rotation again.
-  if (capsulesCentredOnMass_) {
-    for (std::size_t i = 0; i < linkShapes_.size(); ++i) {
-      const int link = static_cast<int>(i);
-      linkShapes_[i]->place(body_.centerOfMass(link), body_.angle(link), body_.axis(link));
-    }
-  } else {
-    for (std::size_t i = 0; i < linkShapes_.size(); ++i) {
-      const int link = static_cast<int>(i);
-      linkShapes_[i]->place(body_.toWorld(link, {linkHalfLengths_[i], 0}), body_.angle(link),
-                            body_.axis(link));
-    }
+  for (std::size_t i = 0; i < linkShapes_.size(); ++i) {
+    const int link = static_cast<int>(i);
+    const Vector2 centre = capsulesCentredOnMass_ ? body_.centerOfMass(link)
+                                                  : body_.toWorld(link, {linkHalfLengths_[i], 0});
+    linkShapes_[i]->place(centre, body_.angle(link), body_.axis(link));
   }
   r = body_.basePosition();
   alpha = baseAngle;
