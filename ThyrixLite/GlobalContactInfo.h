@@ -31,6 +31,12 @@ struct GlobalContactInfo {
   Vector2 point;   ///< contact point, midway between the two surfaces
   Vector2 normal;  ///< unit normal from A to B
   real depth = 0;  ///< overlap along the normal; negative is a gap (speculative contact)
+
+  /// Whether @p other is the same contact, in this step or another: the same shapes and
+  /// feature.
+  [[nodiscard]] bool sameContactAs(const GlobalContactInfo& other) const {
+    return shapeA == other.shapeA && shapeB == other.shapeB && feature == other.feature;
+  }
 };
 
 }  // namespace thyrix

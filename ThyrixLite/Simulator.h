@@ -222,10 +222,11 @@ class Simulator : public World {
   /// are, in their order of detection.
   std::span<const std::uint32_t> previousContactsOf(std::uint32_t shapeA, std::uint32_t shapeB);
   /// The force the last step's contact with @p contact's identity (shapes and feature) ended
-  /// with, or 0. Looks first at @p hint (left just past the contact found) and at
-  /// @p position, @p contact's own place in `contacts`.
-  [[nodiscard]] real previousForce(const GlobalContactInfo& contact, std::size_t position,
-                                   std::size_t& hint);
+  /// with, or 0, when it is not at the warm start's first guess (solveIsland(): the contact
+  /// after the last found). Looks at @p position, @p contact's own place in `contacts`, then
+  /// searches; @p hint is left just past the contact found.
+  [[nodiscard]] real searchPreviousForce(const GlobalContactInfo& contact, std::size_t position,
+                                         std::size_t& hint);
   void clearContactLists();
   void solveIsland(std::span<const std::uint32_t> island);
   void solveGeneralIsland(std::span<const std::uint32_t> island);

@@ -104,19 +104,13 @@ std::span<const std::uint32_t> Simulator::previousContactsOf(std::uint32_t shape
   return std::span(previousOrder_).subspan(first, last - first);
 }
 
-real Simulator::previousForce(const GlobalContactInfo& contact, std::size_t position,
-                              std::size_t& hint) {
-  const auto same = [&contact](const GlobalContactInfo& previous) {
-    return previous.shapeA == contact.shapeA && previous.shapeB == contact.shapeB &&
-           previous.feature == contact.feature;
-  };
-  // Detection lists the contacts in nearly the last step's order: the one after the last
-  // found, then the one at the same place, before a search.
-  for (const std::size_t guess : {hint, position}) {
-    if (guess < previousContacts_.size() && same(previousContacts_[guess])) {
-      hint = guess + 1;
-      return previousContacts_[guess].force;
-    }
+real Simulator::searchPreviousForce(const GlobalContactInfo& contact, std::size_t position,
+                                    std::size_t& hint) {
+  // Detection lists the contacts in nearly the last step's order: after the contact after the
+  // last found (solveIsland()), the one at the same place, before a search.
+  if (position < previousContacts_.size() && previousContacts_[position].sameContactAs(contact)) {
+    hint = position + 1;
+    return previousContacts_[position].force;
   }
   for (const std::uint32_t k : previousContactsOf(contact.shapeA, contact.shapeB)) {
     if (previousContacts_[k].feature == contact.feature) {

@@ -253,19 +253,18 @@ void Simulator::solveIsland(std::span<const std::uint32_t> island) {
   }
   if (settings_.warmStart && previousSolved_) {
     // The forces alone: Gauss-Seidel adds their velocities as it copies the island. The last
-    // step's contact after the one found last is previousForce()'s first guess, and usually
-    // the one: tried here, without the call.
+    // step's contact after the one found last is usually the one (detection keeps the order):
+    // tried here, without a call; searchPreviousForce() looks further.
     const GlobalContactInfo* const previous = previousContacts_.data();
     const std::size_t previousCount = previousContacts_.size();
     for (const std::uint32_t k : island) {
       const GlobalContactInfo& c = contacts.items_[k];
       const std::size_t hint = previousHint_;
-      if (hint < previousCount && previous[hint].shapeA == c.shapeA &&
-          previous[hint].shapeB == c.shapeB && previous[hint].feature == c.feature) {
+      if (hint < previousCount && previous[hint].sameContactAs(c)) {
         previousHint_ = hint + 1;
         rows_[k].force = previous[hint].force;
       } else {
-        rows_[k].force = previousForce(c, k, previousHint_);
+        rows_[k].force = searchPreviousForce(c, k, previousHint_);
       }
     }
   }
