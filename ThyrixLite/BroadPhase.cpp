@@ -3,6 +3,9 @@
 #include <ThyrixLite/BroadPhase.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
+#include <type_traits>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -21,6 +24,18 @@ real extent(const BoundingBox& box) {
 }
 
 constexpr std::uint32_t oversizedMark = ~0u;
+
+/// The pair (@p first, @p second) as the word a BoxPair's bytes hold.
+std::uint64_t pairWord(std::uint32_t first, std::uint32_t second) {
+  static_assert(std::endian::native == std::endian::little, "first is the low half");
+  return std::uint64_t{first} | std::uint64_t{second} << 32;
+}
+
+/// Stores the pair @p word (see pairWord) at @p out, in one store.
+void storePair(BoxPair* out, std::uint64_t word) {
+  static_assert(sizeof(BoxPair) == sizeof(word) && std::is_trivially_copyable_v<BoxPair>);
+  std::memcpy(out, &word, sizeof(word));
+}
 /// The dense grid is used while it has at most this many cells per box (plus a margin for
 /// small counts); sparser layouts hash their cells instead.
 constexpr std::int64_t denseCellsPerBox = 4;
@@ -120,7 +135,8 @@ class OverlapTest<double> {
   std::size_t operator()(const BoundingBox& o) const {
     const __m128d hit = _mm_and_pd(_mm_cmple_pd(lower_, _mm_loadu_pd(row(o) + 2)),
                                    _mm_cmple_pd(_mm_loadu_pd(row(o)), upper_));
-    return std::size_t{_mm_movemask_pd(hit) == 3};
+    // 1 for both lanes' bits (3), else 0: an add and a shift (not a compare and a widening).
+    return (static_cast<std::uint32_t>(_mm_movemask_pd(hit)) + 1) >> 2;
   }
 
  private:
@@ -138,7 +154,7 @@ class OverlapTest<float> {
     const __m128 other = _mm_loadu_ps(reinterpret_cast<const float*>(&o));
     // (box lower x, y, other lower x, y) <= (other upper x, y, box upper x, y)
     const __m128 hit = _mm_cmple_ps(_mm_movelh_ps(box_, other), _mm_movehl_ps(box_, other));
-    return std::size_t{_mm_movemask_ps(hit) == 15};
+    return (static_cast<std::uint32_t>(_mm_movemask_ps(hit)) + 1) >> 4;  // 1 for 15, else 0
   }
 
  private:
@@ -279,21 +295,26 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
   if (candidates_.size() < 2 * std::size_t{count} + 64)
     candidates_.resize(2 * std::size_t{count} + 64);
   BoxPair* out = candidates_.data();
+  // Every buffer through a local (GCC reloaded the members' pointers and the candidates'
+  // size from the object at every box: the stores of pairs might have changed them).
+  std::size_t capacity = candidates_.size();
   const BoundingBox* const all = boxes.data();
   const std::uint32_t* const start = cellStart_.data();
   const std::uint32_t* const sorted = sortedBoxes_.data();
+  const std::uint32_t* const slotOfBox = slotOfBox_.data();
   for (std::uint32_t i = 0; i < count; ++i) {
-    const std::uint32_t own = cellOfBox_[i];
+    const std::uint32_t own = cellOfBox[i];
     if (own == oversizedMark) continue;
-    const std::uint32_t ownBegin = slotOfBox_[i] + 1;
+    const std::uint32_t ownBegin = slotOfBox[i] + 1;
     const std::uint32_t aboveBegin = start[own + 1];
     const std::uint32_t aboveEnd = start[own + 2];
     const std::uint32_t nextBegin = start[own + stride - 1];
     const std::uint32_t nextEnd = start[own + stride + 2];
     const std::size_t candidates = (aboveEnd - ownBegin) + (nextEnd - nextBegin);
-    if (n + candidates > candidates_.size()) {  // rare: the buffer doubles
-      candidates_.resize(std::max(2 * candidates_.size(), n + candidates));
+    if (n + candidates > capacity) {  // rare: the buffer doubles
+      candidates_.resize(std::max(2 * capacity, n + candidates));
       out = candidates_.data();
+      capacity = candidates_.size();
     }
     const OverlapTest<real> overlapsBox(all[i]);
     const auto overlaps = [&](std::uint32_t j) { return overlapsBox(all[j]); };
@@ -305,10 +326,10 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
     const auto testRange = [&](std::uint32_t begin, std::uint32_t end) {
       for (std::uint32_t k = begin; k < end; ++k) {
         const std::uint32_t j = sorted[k];
-        // min and max by a mask: GCC made std::min/max a branch, which j's side of i makes
-        // random to the predictor.
-        const std::uint32_t swap = (i ^ j) & (std::uint32_t{0} - std::uint32_t{j < i});
-        out[n] = {i ^ swap, j ^ swap};
+        // The pair as one word, (i, j) or (j, i) chosen by a conditional move: which side of i
+        // j is on is random to the predictor (GCC made std::min/max a branch; a mask took
+        // twice the instructions).
+        storePair(out + n, j < i ? pairWord(j, i) : pairWord(i, j));
         n += overlaps(j);
       }
     };
