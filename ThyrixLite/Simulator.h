@@ -255,6 +255,10 @@ class Simulator : public World {
   std::vector<Primitive*> sensingPrimitives_;  // primitives with tactile sensors, this step
   std::vector<BoundingBox> gridBoxes_;
   std::vector<BoxPair> pairs_;
+  // detection-side scratch
+  /// updateShape and updateBody's end for a circle that is its body (@p state's).
+  void updateStandaloneCircle(std::uint32_t shape, Vector2 r, bool poseKnown, PhysicalObject& body,
+                              BodyState& state);
   BroadPhase broadPhase_;
   // Rest skipping (SimulatorContacts.cpp): what the last detection saw.
   std::vector<BodyState> bodyStates_;
