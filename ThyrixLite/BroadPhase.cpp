@@ -59,6 +59,69 @@ std::int64_t floorToInt(real q) {
                                    std::uint64_t{static_cast<real>(t) > q});
 }
 
+/// The centre of @p box in cells of side @p cellSize.
+Vector2 centreInCells(const BoundingBox& box, real cellSize) {
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<real, double>) {
+    // x and y in one register: one addition, multiplication and division for both (GCC made
+    // two of each), the same operations on the same values.
+    const auto* const corners = reinterpret_cast<const double*>(&box);
+    const __m128d q = _mm_div_pd(
+        _mm_mul_pd(_mm_add_pd(_mm_loadu_pd(corners), _mm_loadu_pd(corners + 2)), _mm_set1_pd(0.5)),
+        _mm_set1_pd(cellSize));
+    return {_mm_cvtsd_f64(q), _mm_cvtsd_f64(_mm_unpackhi_pd(q, q))};
+  }
+#endif
+  return (box.lower + box.upper) * real(0.5) / cellSize;
+}
+
+/// Adds every box of @p boxes, in index order, to @p extents (the sweep's) and to the sum
+/// @p extentSum and the largest @p maxExtent of their extents (the grid's, see extent()).
+void gatherExtents(std::span<const BoundingBox> boxes, SweepAndPrune::Extents& extents,
+                   real& extentSum, real& maxExtent) {
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<real, double>) {
+    // A box's x and y in the two halves of a register (a pile's boxes in every step): the
+    // same operations in the same order, so the same bits. std::min(a, b) is `b < a ? b : a`,
+    // which is MINPD(b, a), and std::max(a, b) is `a < b ? b : a`, MAXPD(b, a); the extent,
+    // std::max(x side, y side), is MAXSD(y side, x side).
+    static_assert(std::is_standard_layout_v<BoundingBox> && sizeof(BoundingBox) == 4 * sizeof(real),
+                  "a box is read as its four coordinates");
+    __m128d sums = _mm_set_pd(extents.sumY, extents.sumX);
+    __m128d low = _mm_set_pd(extents.lowY, extents.lowX);
+    __m128d high = _mm_set_pd(extents.highY, extents.highX);
+    __m128d sum = _mm_set_sd(extentSum);
+    __m128d most = _mm_set_sd(maxExtent);
+    for (const BoundingBox& box : boxes) {
+      const auto* const corners = reinterpret_cast<const double*>(&box);
+      const __m128d lower = _mm_loadu_pd(corners);
+      const __m128d upper = _mm_loadu_pd(corners + 2);
+      const __m128d sides = _mm_sub_pd(upper, lower);
+      sums = _mm_add_pd(sums, sides);
+      low = _mm_min_pd(lower, low);
+      high = _mm_max_pd(upper, high);
+      const __m128d side = _mm_max_sd(_mm_unpackhi_pd(sides, sides), sides);
+      sum = _mm_add_sd(sum, side);
+      most = _mm_max_sd(side, most);
+    }
+    extents.sumX = _mm_cvtsd_f64(sums);
+    extents.sumY = _mm_cvtsd_f64(_mm_unpackhi_pd(sums, sums));
+    extents.lowX = _mm_cvtsd_f64(low);
+    extents.lowY = _mm_cvtsd_f64(_mm_unpackhi_pd(low, low));
+    extents.highX = _mm_cvtsd_f64(high);
+    extents.highY = _mm_cvtsd_f64(_mm_unpackhi_pd(high, high));
+    extentSum = _mm_cvtsd_f64(sum);
+    maxExtent = _mm_cvtsd_f64(most);
+    return;
+  }
+#endif
+  for (const BoundingBox& box : boxes) {
+    extents.add(box);
+    extentSum += extent(box);
+    maxExtent = std::max(maxExtent, extent(box));
+  }
+}
+
 }  // namespace
 
 void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
@@ -95,10 +158,10 @@ void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes,
     maxExtent = std::max(maxExtent, extent(box));
   };
   const bool gridExpected = lastTookGrid_ || !allowSweep;
-  for (const BoundingBox& box : boxes) {
-    extents.add(box);
-    if (gridExpected) addGridExtent(box);
-  }
+  if (gridExpected)
+    gatherExtents(boxes, extents, extentSum, maxExtent);
+  else
+    for (const BoundingBox& box : boxes) extents.add(box);
   lastTookGrid_ = false;
   if (allowSweep && sweep_.findPairs(boxes, extents, sweepTestsPerBox, pairs)) return;
   if (!gridExpected)
@@ -197,28 +260,37 @@ void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, real extent
   std::int64_t highX = INT64_MIN;
   std::int64_t highY = INT64_MIN;
   // Through local pointers, the coordinates kept in registers (GCC reloaded the buffers'
-  // pointers and the stored coordinates at every box), both quotients in one division.
+  // pointers and the stored coordinates at every box).
   std::uint32_t* const cellOfBox = cellOfBox_.data();
   std::int64_t* const cellX = cellX_.data();
   std::int64_t* const cellY = cellY_.data();
-  for (std::uint32_t i = 0; i < count; ++i) {
-    const BoundingBox& box = boxes[i];
-    if (extent(box) > cellSize) {
-      cellOfBox[i] = oversizedMark;
-      oversized_.push_back(i);
-      continue;
+  const auto assignCells = [&](auto mayBeOversized) {
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const BoundingBox& box = boxes[i];
+      if (decltype(mayBeOversized)::value && extent(box) > cellSize) {
+        cellOfBox[i] = oversizedMark;
+        oversized_.push_back(i);
+        continue;
+      }
+      const Vector2 q = centreInCells(box, cellSize);
+      const std::int64_t x = floorToInt(q.x);
+      const std::int64_t y = floorToInt(q.y);
+      cellX[i] = x;
+      cellY[i] = y;
+      cellOfBox[i] = 0;
+      lowX = std::min(lowX, x);
+      lowY = std::min(lowY, y);
+      highX = std::max(highX, x);
+      highY = std::max(highY, y);
     }
-    const Vector2 q = (box.lower + box.upper) * real(0.5) / cellSize;  // the centre, in cells
-    const std::int64_t x = floorToInt(q.x);
-    const std::int64_t y = floorToInt(q.y);
-    cellX[i] = x;
-    cellY[i] = y;
-    cellOfBox[i] = 0;
-    lowX = std::min(lowX, x);
-    lowY = std::min(lowY, y);
-    highX = std::max(highX, x);
-    highY = std::max(highY, y);
-  }
+  };
+  // No box is larger than a cell when the largest is not (a pile: the cell is the largest
+  // box), and the loop then leaves the test out. (maxExtent is not NaN, and a NaN extent is
+  // never larger.)
+  if (maxExtent > cellSize)
+    assignCells(std::true_type{});
+  else
+    assignCells(std::false_type{});
 
   // One cell of padding on every side, so that the neighbours of every cell exist.
   const bool anyRegular = lowX <= highX;
