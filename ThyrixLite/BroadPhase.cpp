@@ -25,10 +25,13 @@ real extent(const BoundingBox& box) {
 
 constexpr std::uint32_t oversizedMark = ~0u;
 
+/// Where a BoxPair's first index lies in the word its bytes make (the second in the other
+/// half).
+constexpr int firstShift = std::endian::native == std::endian::little ? 0 : 32;
+
 /// The pair (@p first, @p second) as the word a BoxPair's bytes hold.
 std::uint64_t pairWord(std::uint32_t first, std::uint32_t second) {
-  static_assert(std::endian::native == std::endian::little, "first is the low half");
-  return std::uint64_t{first} | std::uint64_t{second} << 32;
+  return std::uint64_t{first} << firstShift | std::uint64_t{second} << (32 - firstShift);
 }
 
 /// Stores the pair @p word (see pairWord) at @p out, in one store.
@@ -36,6 +39,14 @@ void storePair(BoxPair* out, std::uint64_t word) {
   static_assert(sizeof(BoxPair) == sizeof(word) && std::is_trivially_copyable_v<BoxPair>);
   std::memcpy(out, &word, sizeof(word));
 }
+
+/// The pair stored at @p pair, as its word (see pairWord).
+std::uint64_t loadPair(const BoxPair* pair) {
+  std::uint64_t word;
+  std::memcpy(&word, pair, sizeof(word));
+  return word;
+}
+
 /// The dense grid is used while it has at most this many cells per box (plus a margin for
 /// small counts); sparser layouts hash their cells instead.
 constexpr std::int64_t denseCellsPerBox = 4;
@@ -395,18 +406,26 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
       out[n] = {i, j};
       n += overlaps(j);
     }
+    // (i, j) as it comes, put in order below: only the pairs kept (a pile keeps one
+    // candidate in five), not every candidate.
     const auto testRange = [&](std::uint32_t begin, std::uint32_t end) {
       for (std::uint32_t k = begin; k < end; ++k) {
         const std::uint32_t j = sorted[k];
-        // The pair as one word, (i, j) or (j, i) chosen by a conditional move: which side of i
-        // j is on is random to the predictor (GCC made std::min/max a branch; a mask took
-        // twice the instructions).
-        storePair(out + n, j < i ? pairWord(j, i) : pairWord(i, j));
+        storePair(out + n, pairWord(i, j));
         n += overlaps(j);
       }
     };
     testRange(nextBegin, nextEnd);
     testRange(aboveBegin, aboveEnd);
+  }
+  // Each pair (lower index first) by a conditional move between its word and the word turned
+  // by half (its halves swapped): which side of i j is on is random to the predictor (GCC
+  // made std::min/max a branch).
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint64_t word = loadPair(out + k);
+    const auto first = static_cast<std::uint32_t>(word >> firstShift);
+    const auto second = static_cast<std::uint32_t>(word >> (32 - firstShift));
+    storePair(out + k, second < first ? std::rotr(word, 32) : word);
   }
   // (Grown geometrically, as the zero-filled output was: a count of pairs that creeps up must
   // not reallocate the output at every new largest count.)
