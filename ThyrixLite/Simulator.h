@@ -302,10 +302,10 @@ class Simulator : public World {
   std::vector<std::uint32_t> objectContactCursor_;  // per object, 0 outside indexContacts
   std::vector<std::uint32_t> listedObjects_;        // objects whose `contacts` is not empty
 
-  std::vector<SolverBody> bodies_;  // valid for the bodies in touched_ only
+  std::vector<SolverBody> bodies_;  // valid for the bodies of this step's rows only
   std::vector<std::uint8_t> movable_;
-  std::vector<std::uint32_t> touched_;       // bodies of this step's rows, each once
-  std::vector<std::uint64_t> touchedStamp_;  // stamp_ when a body was last put in touched_
+  std::vector<std::uint32_t> touched_;       // movable rigid bodies of this step's rows, once
+  std::vector<std::uint64_t> touchedStamp_;  // stamp_ when a row last touched a body
   std::uint64_t stamp_ = 0;
   std::vector<ContactConstraint> rows_;
   Islands islands_;

@@ -32,11 +32,43 @@ void Simulator::solveContacts() {
     return;
   }
 
+  // One pass over the contacts builds the rows and brings in their bodies: each body's
+  // object is read once, when its first row needs it, and its position (a lever arm) is then
+  // at hand for that row. Only the bodies that rows touch take part (the others keep their
+  // velocities): a world of many bodies with few contacts pays for its contacts, not for its
+  // size. The islands are linked as the bodies are touched, through plain pointers (the byte
+  // stores of movable would make the compiler reload every member).
   const real correction = settings_.penetrationCorrection;
   rows_.resize(contacts.size() + internal_.size());
+  ++stamp_;
+  touched_.clear();
+  Islands::Adder islands = islands_.start(objects.size(), rows_.size());
+  const std::uint64_t stamp = stamp_;
+  std::uint64_t* const touchedStamp = touchedStamp_.data();
+  SolverBody* const bodies = bodies_.data();
+  std::uint8_t* const movableBody = movable_.data();
+  ContactConstraint* const rows = rows_.data();
+  const auto touch = [&](std::uint32_t i) {
+    if (touchedStamp[i] == stamp) return;
+    touchedStamp[i] = stamp;
+    const PhysicalObject& object = objects[i];
+    const bool multiBody = multiBodies_[i] != nullptr;
+    // A multi-body object answers for itself (general islands): zero here, so the rigid
+    // formulas ignore its sides.
+    bodies[i] = multiBody ? SolverBody{}
+                          : SolverBody{object.v, object.omega, object.inverseMass(),
+                                       object.inverseInertia()};
+    movableBody[i] = multiBody || !object.fixed ? 1 : 0;
+    // Only the velocities of movable rigid bodies go back to their objects: listed now, while
+    // the object is at hand, the write-back need not read it again.
+    if (!multiBody && !object.fixed) touched_.push_back(i);
+    islands.addBody(i);
+  };
   for (std::size_t k = 0; k < contacts.size(); ++k) {
     const GlobalContactInfo& c = contacts.items_[k];
-    ContactConstraint& row = rows_[k];
+    touch(c.bodyA);
+    touch(c.bodyB);
+    ContactConstraint& row = rows[k];
     row.a = c.bodyA;
     row.b = c.bodyB;
     row.normal = c.normal;
@@ -52,65 +84,31 @@ void Simulator::solveContacts() {
     // Overlap: separate at a fraction of the depth per step; gap: approach at most by the gap.
     row.target = c.depth > 0 ? correction * c.depth / dt : c.depth / dt;
     row.force = 0;
+    islands.addRow(k, c.bodyA, c.bodyB, movableBody[c.bodyA] != 0, movableBody[c.bodyB] != 0);
   }
   // A joint limit is a row of its object alone; its Jacobian is the object's business.
-  for (std::size_t j = 0; j < internal_.size(); ++j)
-    rows_[contacts.size() + j] = {
-        internalOwner_[j], internalOwner_[j], {}, 0, 0, internal_[j].target, 0};
+  for (std::size_t j = 0; j < internal_.size(); ++j) {
+    const std::uint32_t owner = internalOwner_[j];
+    touch(owner);
+    rows[contacts.size() + j] = {owner, owner, {}, 0, 0, internal_[j].target, 0};
+    islands.addRow(contacts.size() + j, owner, owner, movableBody[owner] != 0,
+                   movableBody[owner] != 0);
+  }
 
   // In a sparse world most steps need no force at all: every contact (mostly speculative)
-  // holds by itself at the free velocities, so no island needs building and no velocity
+  // holds by itself at the free velocities, so no island needs solving and no velocity
   // changes. Only rows between rigid bodies can be judged so (a multi-body row's velocity is
-  // its object's business).
+  // its object's business); their bodies' velocities are their objects'.
   const bool forceFree =
       !hasMultiBodies_ &&
       std::all_of(rows_.begin(), rows_.end(), [this](const ContactConstraint& row) {
-        const PhysicalObject& a = objects[row.a];
-        const PhysicalObject& b = objects[row.b];
-        return row.normalVelocity({a.v, a.omega}, {b.v, b.omega}) >= row.target;
+        return row.normalVelocity(bodies_[row.a], bodies_[row.b]) >= row.target;
       });
   if (forceFree) {  // no force: contacts and object contact lists already say 0
     updateTactileSensors();
     return;
   }
 
-  // Only the bodies that rows touch take part (the others keep their velocities): a world of
-  // many bodies with few contacts pays for its contacts, not for its size. The islands are
-  // linked as the bodies are touched (one pass over the contacts' bodies), through plain
-  // pointers (the byte stores of movable would make the compiler reload every member).
-  ++stamp_;
-  touched_.clear();
-  Islands::Adder islands = islands_.start(objects.size(), rows_.size());
-  const std::uint64_t stamp = stamp_;
-  std::uint64_t* const touchedStamp = touchedStamp_.data();
-  SolverBody* const bodies = bodies_.data();
-  std::uint8_t* const movableBody = movable_.data();
-  const auto touch = [&](std::uint32_t i) {
-    if (touchedStamp[i] == stamp) return;
-    touchedStamp[i] = stamp;
-    touched_.push_back(i);
-    const PhysicalObject& object = objects[i];
-    // A multi-body object answers for itself (general islands): zero here, so the rigid
-    // formulas ignore its sides.
-    bodies[i] =
-        multiBodies_[i] != nullptr
-            ? SolverBody{}
-            : SolverBody{object.v, object.omega, object.inverseMass(), object.inverseInertia()};
-    movableBody[i] = movable(i) ? 1 : 0;
-    islands.addBody(i);
-  };
-  for (std::size_t k = 0; k < contacts.size(); ++k) {
-    const GlobalContactInfo& c = contacts.items_[k];
-    touch(c.bodyA);
-    touch(c.bodyB);
-    islands.addRow(k, c.bodyA, c.bodyB, movableBody[c.bodyA] != 0, movableBody[c.bodyB] != 0);
-  }
-  for (std::size_t j = 0; j < internal_.size(); ++j) {
-    const std::uint32_t owner = internalOwner_[j];
-    touch(owner);
-    islands.addRow(contacts.size() + j, owner, owner, movableBody[owner] != 0,
-                   movableBody[owner] != 0);
-  }
   islands_.finish();
   statistics_.islands = islands_.count();
   for (std::size_t i = 0; i < islands_.count(); ++i) {
@@ -126,7 +124,6 @@ void Simulator::solveContacts() {
   }
   for (const std::uint32_t i : touched_) {
     PhysicalObject& object = objects[i];
-    if (object.fixed || multiBodies_[i] != nullptr) continue;
     object.v = bodies_[i].v;
     object.omega = bodies_[i].omega;
   }
