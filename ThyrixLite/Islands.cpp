@@ -4,6 +4,7 @@ namespace thyrix {
 
 void Islands::reserve(std::size_t bodies, std::size_t rows) {
   parent_.reserve(bodies);
+  rank_.reserve(bodies);
   islandOfBody_.reserve(bodies);
   islandOfRow_.reserve(rows);
   islandStart_.reserve(rows + 2);
@@ -13,10 +14,11 @@ void Islands::reserve(std::size_t bodies, std::size_t rows) {
 Islands::Adder Islands::start(std::size_t bodies, std::size_t rows) {
   if (parent_.size() < bodies) {
     parent_.resize(bodies);
+    rank_.resize(bodies);
     islandOfBody_.resize(bodies);
   }
   islandOfRow_.resize(rows);
-  return {parent_.data(), islandOfBody_.data(), islandOfRow_.data()};
+  return {parent_.data(), rank_.data(), islandOfBody_.data(), islandOfRow_.data()};
 }
 
 void Islands::finish() {

@@ -304,7 +304,7 @@ class Simulator : public World {
 
   std::vector<SolverBody> bodies_;  // valid for the bodies of this step's rows only
   std::vector<std::uint8_t> movable_;
-  std::vector<std::uint32_t> touched_;       // movable rigid bodies of this step's rows, once
+  std::vector<std::uint32_t> touched_;       // bodies of this step's rows (movable rigid first)
   std::vector<std::uint64_t> touchedStamp_;  // stamp_ when a row last touched a body
   std::uint64_t stamp_ = 0;
   std::vector<ContactConstraint> rows_;

@@ -32,39 +32,30 @@ void Simulator::solveContacts() {
     return;
   }
 
-  // One pass over the contacts builds the rows and brings in their bodies: each body's
-  // object is read once, when its first row needs it, and its position (a lever arm) is then
-  // at hand for that row. Only the bodies that rows touch take part (the others keep their
-  // velocities): a world of many bodies with few contacts pays for its contacts, not for its
-  // size. The islands are linked as the bodies are touched, through plain pointers (the byte
-  // stores of movable would make the compiler reload every member).
-  const real correction = settings_.penetrationCorrection;
-  rows_.resize(contacts.size() + internal_.size());
-  ++stamp_;
-  touched_.clear();
-  Islands::Adder islands = islands_.start(objects.size(), rows_.size());
-  const std::uint64_t stamp = stamp_;
+  // The rows, then their bodies, then the islands. Only the bodies that rows touch take part
+  // (the others keep their velocities): a world of many bodies with few contacts pays for its
+  // contacts, not for its size. The rows' pass lists each body at its first row without a
+  // branch (whether a body is new is unpredictable: a branch on it was mispredicted about once
+  // a contact in a pile); the bodies' pass then reads each object once.
+  const real depthFactor[2] = {1, settings_.penetrationCorrection};  // gap, overlap
+  const std::size_t contactCount = contacts.size();
+  const std::size_t rowCount = contactCount + internal_.size();
+  rows_.resize(rowCount);
+  // Each body once, and a slot past them for touch()'s store that is not taken. Sized by the
+  // objects, not the rows: it grows only when objects are added.
+  if (touched_.size() <= objects.size()) touched_.resize(objects.size() + 1);
+  const std::uint64_t stamp = ++stamp_;
   std::uint64_t* const touchedStamp = touchedStamp_.data();
-  SolverBody* const bodies = bodies_.data();
-  std::uint8_t* const movableBody = movable_.data();
-  ContactConstraint* const rows = rows_.data();
+  std::uint32_t* const touched = touched_.data();
+  std::size_t touchedCount = 0;
   const auto touch = [&](std::uint32_t i) {
-    if (touchedStamp[i] == stamp) return;
+    const bool first = touchedStamp[i] != stamp;
     touchedStamp[i] = stamp;
-    const PhysicalObject& object = objects[i];
-    const bool multiBody = multiBodies_[i] != nullptr;
-    // A multi-body object answers for itself (general islands): zero here, so the rigid
-    // formulas ignore its sides.
-    bodies[i] = multiBody ? SolverBody{}
-                          : SolverBody{object.v, object.omega, object.inverseMass(),
-                                       object.inverseInertia()};
-    movableBody[i] = multiBody || !object.fixed ? 1 : 0;
-    // Only the velocities of movable rigid bodies go back to their objects: listed now, while
-    // the object is at hand, the write-back need not read it again.
-    if (!multiBody && !object.fixed) touched_.push_back(i);
-    islands.addBody(i);
+    touched[touchedCount] = i;
+    touchedCount += first ? 1 : 0;
   };
-  for (std::size_t k = 0; k < contacts.size(); ++k) {
+  ContactConstraint* const rows = rows_.data();
+  for (std::size_t k = 0; k < contactCount; ++k) {
     const GlobalContactInfo& c = contacts.items_[k];
     touch(c.bodyA);
     touch(c.bodyB);
@@ -82,17 +73,39 @@ void Simulator::solveContacts() {
                    ? 0
                    : cross(c.point - c.objectB->r, c.normal);
     // Overlap: separate at a fraction of the depth per step; gap: approach at most by the gap.
-    row.target = c.depth > 0 ? correction * c.depth / dt : c.depth / dt;
+    // The gap's factor 1 changes no bit: one formula for both, its factor looked up, with no
+    // branch on the sign of the depth (in a pile, as often one as the other: a branch was
+    // mispredicted half the time; a conditional factor compiled to a branch too).
+    row.target = depthFactor[c.depth > 0 ? 1 : 0] * c.depth / dt;
     row.force = 0;
-    islands.addRow(k, c.bodyA, c.bodyB, movableBody[c.bodyA] != 0, movableBody[c.bodyB] != 0);
   }
   // A joint limit is a row of its object alone; its Jacobian is the object's business.
   for (std::size_t j = 0; j < internal_.size(); ++j) {
     const std::uint32_t owner = internalOwner_[j];
     touch(owner);
-    rows[contacts.size() + j] = {owner, owner, {}, 0, 0, internal_[j].target, 0};
-    islands.addRow(contacts.size() + j, owner, owner, movableBody[owner] != 0,
-                   movableBody[owner] != 0);
+    rows[contactCount + j] = {owner, owner, {}, 0, 0, internal_[j].target, 0};
+  }
+
+  // The bodies, each object read once. Only the velocities of movable rigid bodies go back to
+  // their objects: they are kept at the front of touched_ (in place, without a branch), so
+  // the write-back need not read the objects again.
+  Islands::Adder islands = islands_.start(objects.size(), rowCount);
+  SolverBody* const bodies = bodies_.data();
+  std::uint8_t* const movableBody = movable_.data();
+  std::size_t movedCount = 0;
+  for (std::size_t t = 0; t < touchedCount; ++t) {
+    const std::uint32_t i = touched[t];
+    const PhysicalObject& object = objects[i];
+    const bool multiBody = multiBodies_[i] != nullptr;
+    // A multi-body object answers for itself (general islands): zero here, so the rigid
+    // formulas ignore its sides.
+    bodies[i] = multiBody ? SolverBody{}
+                          : SolverBody{object.v, object.omega, object.inverseMass(),
+                                       object.inverseInertia()};
+    movableBody[i] = multiBody || !object.fixed ? 1 : 0;
+    touched[movedCount] = i;
+    movedCount += !multiBody && !object.fixed ? 1 : 0;
+    islands.addBody(i);
   }
 
   // In a sparse world most steps need no force at all: every contact (mostly speculative)
@@ -109,6 +122,13 @@ void Simulator::solveContacts() {
     return;
   }
 
+  // The islands, linked through plain pointers (the byte stores of movable would make the
+  // compiler reload every member).
+  for (std::size_t k = 0; k < rowCount; ++k) {
+    const std::uint32_t a = rows[k].a;
+    const std::uint32_t b = rows[k].b;
+    islands.addRow(k, a, b, movableBody[a] != 0, movableBody[b] != 0);
+  }
   islands_.finish();
   statistics_.islands = islands_.count();
   for (std::size_t i = 0; i < islands_.count(); ++i) {
@@ -122,7 +142,8 @@ void Simulator::solveContacts() {
     else
       solveIsland(island);
   }
-  for (const std::uint32_t i : touched_) {
+  for (std::size_t t = 0; t < movedCount; ++t) {
+    const std::uint32_t i = touched[t];
     PhysicalObject& object = objects[i];
     object.v = bodies_[i].v;
     object.omega = bodies_[i].omega;
