@@ -70,13 +70,15 @@ std::int64_t floorToInt(real q) {
                                    std::uint64_t{static_cast<real>(t) > q});
 }
 
-/// The centre of @p box in cells of side @p cellSize.
-Vector2 centreInCells(const BoundingBox& box, real cellSize) {
+/// The centre of @p box in cells of side @p cellSize. (A template, as gatherExtents: a float
+/// build never instantiates the double branch, whose conversions it warned about.)
+template <class Real>
+Vector2 centreInCells(const BoundingBox& box, Real cellSize) {
 #if defined(__SSE2__)
-  if constexpr (std::is_same_v<real, double>) {
+  if constexpr (std::is_same_v<Real, double>) {
     // x and y in one register: one addition, multiplication and division for both (GCC made
     // two of each), the same operations on the same values.
-    const auto* const corners = reinterpret_cast<const double*>(&box);
+    const auto* const corners = reinterpret_cast<const Real*>(&box);
     const __m128d q = _mm_div_pd(
         _mm_mul_pd(_mm_add_pd(_mm_loadu_pd(corners), _mm_loadu_pd(corners + 2)), _mm_set1_pd(0.5)),
         _mm_set1_pd(cellSize));
@@ -88,10 +90,12 @@ Vector2 centreInCells(const BoundingBox& box, real cellSize) {
 
 /// Adds every box of @p boxes, in index order, to @p extents (the sweep's) and to the sum
 /// @p extentSum and the largest @p maxExtent of their extents (the grid's, see extent()).
+/// A template: a float build never instantiates the double branch.
+template <class Real>
 void gatherExtents(std::span<const BoundingBox> boxes, SweepAndPrune::Extents& extents,
-                   real& extentSum, real& maxExtent) {
+                   Real& extentSum, Real& maxExtent) {
 #if defined(__SSE2__)
-  if constexpr (std::is_same_v<real, double>) {
+  if constexpr (std::is_same_v<Real, double>) {
     // A box's x and y in the two halves of a register (a pile's boxes in every step): the
     // same operations in the same order, so the same bits. std::min(a, b) is `b < a ? b : a`,
     // which is MINPD(b, a), and std::max(a, b) is `a < b ? b : a`, MAXPD(b, a); the extent,
@@ -104,7 +108,7 @@ void gatherExtents(std::span<const BoundingBox> boxes, SweepAndPrune::Extents& e
     __m128d sum = _mm_set_sd(extentSum);
     __m128d most = _mm_set_sd(maxExtent);
     for (const BoundingBox& box : boxes) {
-      const auto* const corners = reinterpret_cast<const double*>(&box);
+      const auto* const corners = reinterpret_cast<const Real*>(&box);
       const __m128d lower = _mm_loadu_pd(corners);
       const __m128d upper = _mm_loadu_pd(corners + 2);
       const __m128d sides = _mm_sub_pd(upper, lower);
@@ -170,7 +174,7 @@ void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes,
   };
   const bool gridExpected = lastTookGrid_ || !allowSweep;
   if (gridExpected)
-    gatherExtents(boxes, extents, extentSum, maxExtent);
+    gatherExtents<real>(boxes, extents, extentSum, maxExtent);
   else
     for (const BoundingBox& box : boxes) extents.add(box);
   lastTookGrid_ = false;
@@ -283,7 +287,7 @@ void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, real extent
         oversized_.push_back(i);
         continue;
       }
-      const Vector2 q = centreInCells(box, cellSize);
+      const Vector2 q = centreInCells<real>(box, cellSize);
       const std::int64_t x = floorToInt(q.x);
       const std::int64_t y = floorToInt(q.y);
       cellX[i] = x;
