@@ -59,15 +59,40 @@ std::uint32_t bucketCountFor(std::uint32_t count) {
   return buckets;
 }
 
+/// Regular boxes have cell coordinates in [-cellLimit, cellLimit): their differences, and their
+/// neighbours' coordinates, are then far from std::int64_t's limits. A box whose centre is
+/// outside, NaN or infinite is oversized instead (2^62 cells of 1 mm span 4.6e12 km).
+constexpr std::int64_t cellLimit = std::int64_t{1} << 62;
+
 /// floor(@p q) as an integer, for q in the range of std::int64_t: the same value as
 /// `static_cast<std::int64_t>(std::floor(q))`, without the library call std::floor is without
 /// SSE4.1 (and the spills around it). The truncation of a real is a real, so comparing it
-/// back is exact.
+/// back is exact. For any other q (NaN, infinite, too large) the least or the greatest
+/// std::int64_t, without undefined behaviour, so that one look at the least and greatest
+/// cells tells whether every box is in range (cellLimit).
 std::int64_t floorToInt(real q) {
+#if defined(__SSE2__) && (defined(__x86_64__) || defined(_M_X64))
+  // The instruction the cast compiles to, whose result out of range is defined: the least
+  // std::int64_t (a pile pays nothing for the range test).
+  std::int64_t t;
+  if constexpr (std::is_same_v<real, double>)
+    t = _mm_cvttsd_si64(_mm_set_sd(q));
+  else
+    t = _mm_cvttss_si64(_mm_set_ss(q));
+#else
+  constexpr real bound = 0x1p63;  // (exact in float and double)
+  if (!(q >= -bound && q < bound)) return INT64_MIN;
   const auto t = static_cast<std::int64_t>(q);
-  // (Unsigned: no overflow where q is out of range, already undefined in the cast.)
+#endif
+  // (Unsigned: q just below the least std::int64_t gives the greatest, out of cellLimit.)
   return static_cast<std::int64_t>(static_cast<std::uint64_t>(t) -
                                    std::uint64_t{static_cast<real>(t) > q});
+}
+
+/// Whether @p q, a centre in cells, lies in the cells of regular boxes (see cellLimit).
+bool inCellRange(Vector2 q) {
+  constexpr auto bound = static_cast<real>(cellLimit);  // (exact: a power of two)
+  return q.x >= -bound && q.x < bound && q.y >= -bound && q.y < bound;
 }
 
 /// The centre of @p box in cells of side @p cellSize. (A template, as gatherExtents: a float
@@ -279,15 +304,23 @@ void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, real extent
   std::uint32_t* const cellOfBox = cellOfBox_.data();
   std::int64_t* const cellX = cellX_.data();
   std::int64_t* const cellY = cellY_.data();
-  const auto assignCells = [&](auto mayBeOversized) {
+  // With checkRange, a box whose centre is out of the cells' range (or NaN) is oversized.
+  const auto assignCells = [&](auto mayBeOversized, auto checkRange) {
+    const auto setOversized = [&](std::uint32_t i) {
+      cellOfBox[i] = oversizedMark;
+      oversized_.push_back(i);
+    };
     for (std::uint32_t i = 0; i < count; ++i) {
       const BoundingBox& box = boxes[i];
       if (decltype(mayBeOversized)::value && extent(box) > cellSize) {
-        cellOfBox[i] = oversizedMark;
-        oversized_.push_back(i);
+        setOversized(i);
         continue;
       }
       const Vector2 q = centreInCells<real>(box, cellSize);
+      if (decltype(checkRange)::value && !inCellRange(q)) {
+        setOversized(i);
+        continue;
+      }
       const std::int64_t x = floorToInt(q.x);
       const std::int64_t y = floorToInt(q.y);
       cellX[i] = x;
@@ -303,9 +336,18 @@ void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, real extent
   // box), and the loop then leaves the test out. (maxExtent is not NaN, and a NaN extent is
   // never larger.)
   if (maxExtent > cellSize)
-    assignCells(std::true_type{});
+    assignCells(std::true_type{}, std::false_type{});
   else
-    assignCells(std::false_type{});
+    assignCells(std::false_type{}, std::false_type{});
+  // A centre out of range (NaN or infinite coordinates, or far away) gave a cell out of
+  // cellLimit (see floorToInt): once per call, not per box. Then every box again, those out of
+  // range oversized (tested against all boxes by BoundingBox::overlaps: NaN overlaps nothing).
+  if (lowX < -cellLimit || highX >= cellLimit || lowY < -cellLimit || highY >= cellLimit) {
+    oversized_.clear();
+    lowX = lowY = INT64_MAX;
+    highX = highY = INT64_MIN;
+    assignCells(std::true_type{}, std::true_type{});
+  }
 
   // One cell of padding on every side, so that the neighbours of every cell exist.
   const bool anyRegular = lowX <= highX;

@@ -33,6 +33,8 @@ struct BoxColumns {
 /// The grid is a dense array of cells when the boxes fill their bounding rectangle well (piles:
 /// neighbouring cells are then contiguous in memory), else a hash table of cells (scattered
 /// boxes). Both grids give the same pairs in the same order; the sweep gives them in its own.
+/// A box whose centre is NaN, infinite, or more than 2^62 cells from the origin is oversized
+/// too: any box is accepted, and one with a NaN corner overlaps nothing (BoundingBox::overlaps).
 ///
 /// The output order depends only on the input, so runs are reproducible. Buffers are kept
 /// between calls: once warmed up with as many boxes, finding pairs allocates nothing.
