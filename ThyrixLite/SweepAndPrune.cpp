@@ -1,6 +1,7 @@
 #include <ThyrixLite/SweepAndPrune.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace thyrix {
@@ -23,8 +24,9 @@ bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, const Extents&
   const real testsX = extents.sumX / (extents.highX - extents.lowX);
   const real testsY = extents.sumY / (extents.highY - extents.lowY);
   // Along x unless y looks better or x is NaN (an infinite extent, or a NaN box: then along y
-  // when that is a number); a NaN estimate declines.
-  const int axis = testsX <= testsY ? 0 : 1;
+  // when that is a number); a NaN estimate declines. (x when only y is NaN: `testsX <= testsY`
+  // alone chose y then, and declined a row along x for one box NaN in y.)
+  const int axis = testsX <= testsY || std::isnan(testsY) ? 0 : 1;
   if (!((axis == 0 ? testsX : testsY) <= testsPerBox)) return false;
 
   // The entries, in the last call's order when it held as many boxes along the same axis,

@@ -9,6 +9,7 @@
 #include <ThyrixLite/BroadPhase.h>
 #include <ThyrixLite/Circle.h>
 #include <ThyrixLite/Simulator.h>
+#include <ThyrixLite/SweepAndPrune.h>
 #include <Tools/MTRandom.h>
 
 #include <gtest/gtest.h>
@@ -161,6 +162,22 @@ TEST(BroadPhaseNonFinite, ABoxThatTurnsNaNOrFarAndBackIsFollowed) {
         EXPECT_EQ(sortedPairs(pairs), allPairs(boxes)) << count << " boxes";
       }
     }
+  }
+}
+
+TEST(BroadPhaseNonFinite, TheSweepTakesTheAxisWithoutNaN) {
+  // A row along x with one box NaN in y (its y estimate NaN): the sweep runs along x, as
+  // documented, and the NaN box pairs with nothing (the comparisons across fail).
+  for (const int nanAxis : {0, 1}) {
+    std::vector<BoundingBox> boxes = layoutBoxes(2, 200, 4);
+    if (nanAxis == 1)  // the row along y instead, NaN in x
+      for (BoundingBox& box : boxes) box = {{box.lower.y, box.lower.x}, {box.upper.y, box.upper.x}};
+    BoundingBox& odd = boxes[57];
+    (nanAxis == 0 ? odd.lower.y : odd.lower.x) = nan;
+    SweepAndPrune sweep;
+    std::vector<BoxPair> pairs;
+    EXPECT_TRUE(sweep.findPairs(boxes, BroadPhase::sweepTestsPerBox, pairs)) << nanAxis;
+    EXPECT_EQ(sortedPairs(pairs), allPairs(boxes)) << nanAxis;
   }
 }
 
