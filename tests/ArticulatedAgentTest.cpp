@@ -52,6 +52,14 @@ const char* solverName(const ::testing::TestParamInfo<ContactSolverKind>& solver
   return solver.param == ContactSolverKind::Baraff ? "Baraff" : "GaussSeidel";
 }
 
+/// The bits of @p value: results that must be identical are compared so (== would take -0 for
+/// 0).
+std::uint64_t bitsOf(real value) {
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &value, sizeof value);
+  return bits;
+}
+
 /// A circle base (radius 0.5, mass 2) with one chain of @p links links (length 1, radius 0.1,
 /// mass 0.5) attached at its right edge, pointing along +x.
 std::unique_ptr<Agent> makeArm(int links, real angle = 0) {
@@ -60,6 +68,35 @@ std::unique_ptr<Agent> makeArm(int links, real angle = 0) {
       std::vector<ArticulatedLimb>{
           ArticulatedLimb::chain({real(0.5), 0}, links, 1, real(0.1), real(0.5), angle)});
 }
+
+/// Two identical worlds, each with a five-link arm posed alike: a force given to each through
+/// a different call must leave the two bit for bit alike.
+struct TwinArms {
+  explicit TwinArms(ContactSolverKind solver) {
+    for (int k = 0; k < 2; ++k) {
+      worlds[k].setContactSolver(solver);
+      agents[k] = &worlds[k].registerObject(makeArm(links, real(0.3)));
+      agents[k]->setPose({1, 2}, real(0.2));
+    }
+  }
+  void advanceTime() {
+    for (Simulator& world : worlds) world.advanceTime();
+  }
+  /// Expects every body's angle and velocities to have the same bits in both worlds.
+  void expectSameMotion() const {
+    for (int b = Agent::base; b < links; ++b) {
+      const Agent& one = *agents[0];
+      const Agent& other = *agents[1];
+      EXPECT_EQ(bitsOf(one.bodyAngle(b)), bitsOf(other.bodyAngle(b))) << b;
+      EXPECT_EQ(bitsOf(one.bodyAngularVelocity(b)), bitsOf(other.bodyAngularVelocity(b))) << b;
+      EXPECT_EQ(bitsOf(one.bodyVelocity(b).x), bitsOf(other.bodyVelocity(b).x)) << b;
+      EXPECT_EQ(bitsOf(one.bodyVelocity(b).y), bitsOf(other.bodyVelocity(b).y)) << b;
+    }
+  }
+  static constexpr int links = 5;
+  Simulator worlds[2] = {Simulator(real(0.01)), Simulator(real(0.01))};
+  Agent* agents[2] = {};
+};
 
 /// A fresh ArticulatedBody with the agent's description and state, built here, so the agent's
 /// motion is compared with the core algorithm solved directly.
@@ -127,38 +164,22 @@ TEST_P(ArticulatedAgentTest, AForceAtTheCentreOfMassGivesTheBitsOfTheSameForceAt
   // on every body, base included, by the two calls, in two identical worlds.
   const Vector2 forces[] = {{real(0.3), real(-0.8)}, {real(-0.5), real(0.2)}, {0, real(-1)},
                             {real(-0.0), real(0.4)}, {real(0.7), real(-0.0)}, {real(-0.2), 0}};
-  Simulator first(real(0.01));
-  Simulator second(real(0.01));
-  Simulator* simulators[2] = {&first, &second};
-  Agent* agents[2];
-  for (int k = 0; k < 2; ++k) {
-    simulators[k]->setContactSolver(GetParam());
-    agents[k] = &simulators[k]->registerObject(makeArm(5, real(0.3)));
-    agents[k]->setPose({1, 2}, real(0.2));
-    agents[k]->setJointTorque(2, real(0.1));
-  }
+  TwinArms twins(GetParam());
+  Agent* const* agents = twins.agents;
+  for (Agent* agent : twins.agents) agent->setJointTorque(2, real(0.1));
   const real start = agents[1]->jointAngle(1);
   for (int step = 0; step < 20; ++step) {
-    for (int b = Agent::base; b < 5; ++b) {
+    for (int b = Agent::base; b < TwinArms::links; ++b) {
       const Vector2 force = forces[static_cast<std::size_t>(b + step + 1) % std::size(forces)];
       agents[0]->applyLinkForce(b, force, agents[0]->centerOfMass(b));
       agents[1]->applyLinkForceAtCenterOfMass(b, force);
     }
-    first.advanceTime();
-    second.advanceTime();
+    twins.advanceTime();
   }
-  const auto bits = [](real value) {
-    std::uint64_t b = 0;
-    std::memcpy(&b, &value, sizeof value);
-    return b;
-  };
-  for (int b = Agent::base; b < 5; ++b) {
-    EXPECT_EQ(bits(agents[0]->bodyAngle(b)), bits(agents[1]->bodyAngle(b)));
-    EXPECT_EQ(bits(agents[0]->bodyAngularVelocity(b)), bits(agents[1]->bodyAngularVelocity(b)));
-    EXPECT_EQ(bits(agents[0]->bodyVelocity(b).x), bits(agents[1]->bodyVelocity(b).x));
-    EXPECT_EQ(bits(agents[0]->bodyVelocity(b).y), bits(agents[1]->bodyVelocity(b).y));
-    EXPECT_EQ(bits(agents[0]->centerOfMass(b).x), bits(agents[1]->centerOfMass(b).x));
-    EXPECT_EQ(bits(agents[0]->centerOfMass(b).y), bits(agents[1]->centerOfMass(b).y));
+  twins.expectSameMotion();
+  for (int b = Agent::base; b < TwinArms::links; ++b) {
+    EXPECT_EQ(bitsOf(agents[0]->centerOfMass(b).x), bitsOf(agents[1]->centerOfMass(b).x));
+    EXPECT_EQ(bitsOf(agents[0]->centerOfMass(b).y), bitsOf(agents[1]->centerOfMass(b).y));
   }
   EXPECT_NE(agents[1]->jointAngle(1), start);  // the forces moved it
 }
@@ -169,33 +190,16 @@ TEST_P(ArticulatedAgentTest, AForceAtEveryLinksCentreOfMassGivesTheBitsOfTheForc
                             {0, real(-1)},
                             {real(-0.0), real(0.4)},
                             {real(0.7), real(-0.0)}};
-  Simulator first(real(0.01));
-  Simulator second(real(0.01));
-  Simulator* simulators[2] = {&first, &second};
-  Agent* agents[2];
-  for (int k = 0; k < 2; ++k) {
-    simulators[k]->setContactSolver(GetParam());
-    agents[k] = &simulators[k]->registerObject(makeArm(5, real(0.3)));
-    agents[k]->setPose({1, 2}, real(0.2));
-  }
+  TwinArms twins(GetParam());
+  Agent* const* agents = twins.agents;
   for (int step = 0; step < 20; ++step) {
     const Vector2 force = forces[static_cast<std::size_t>(step) % std::size(forces)];
-    for (int i = 0; i < 5; ++i) agents[0]->applyLinkForce(i, force, agents[0]->centerOfMass(i));
+    for (int i = 0; i < TwinArms::links; ++i)
+      agents[0]->applyLinkForce(i, force, agents[0]->centerOfMass(i));
     agents[1]->applyForceAtEveryLinkCenterOfMass(force);
-    first.advanceTime();
-    second.advanceTime();
+    twins.advanceTime();
   }
-  const auto bits = [](real value) {
-    std::uint64_t b = 0;
-    std::memcpy(&b, &value, sizeof value);
-    return b;
-  };
-  for (int b = Agent::base; b < 5; ++b) {
-    EXPECT_EQ(bits(agents[0]->bodyAngle(b)), bits(agents[1]->bodyAngle(b)));
-    EXPECT_EQ(bits(agents[0]->bodyAngularVelocity(b)), bits(agents[1]->bodyAngularVelocity(b)));
-    EXPECT_EQ(bits(agents[0]->bodyVelocity(b).x), bits(agents[1]->bodyVelocity(b).x));
-    EXPECT_EQ(bits(agents[0]->bodyVelocity(b).y), bits(agents[1]->bodyVelocity(b).y));
-  }
+  twins.expectSameMotion();
   EXPECT_NE(agents[1]->bodyAngularVelocity(2), 0);  // the forces moved it
 }
 
@@ -1015,11 +1019,6 @@ TEST(ArticulatedAgentRules, LinkCapsulesLieHalfWayAlongTheirLinksBitForBit) {
   // Each capsule's centre is the link frame's point (half length, 0), placed from the
   // kinematics' centres of mass when every link's is there (the usual capsule link), else
   // computed: the same bits either way, also with one link's centre of mass elsewhere.
-  const auto bits = [](real value) {
-    std::uint64_t b = 0;
-    std::memcpy(&b, &value, sizeof value);
-    return b;
-  };
   for (const bool offCentre : {false, true}) {
     ArticulatedLimb limb({real(0.5), 0});
     for (int i = 0; i < 4; ++i) {
@@ -1037,8 +1036,8 @@ TEST(ArticulatedAgentRules, LinkCapsulesLieHalfWayAlongTheirLinksBitForBit) {
     for (int step = 0; step < 5; ++step) simulator.advanceTime();
     for (int i = 0; i < agent.linkCount(); ++i) {
       const Vector2 centre = agent.articulatedBody().toWorld(i, {real(0.5), 0});
-      EXPECT_EQ(bits(agent.linkShape(i).r.x), bits(centre.x)) << offCentre << " link " << i;
-      EXPECT_EQ(bits(agent.linkShape(i).r.y), bits(centre.y)) << offCentre << " link " << i;
+      EXPECT_EQ(bitsOf(agent.linkShape(i).r.x), bitsOf(centre.x)) << offCentre << " link " << i;
+      EXPECT_EQ(bitsOf(agent.linkShape(i).r.y), bitsOf(centre.y)) << offCentre << " link " << i;
     }
   }
 }
