@@ -5,6 +5,8 @@
 // BoundingBox::overlaps accepts: a box with a NaN corner overlaps nothing, an infinite box
 // overlaps whatever it covers. Run under the sanitizers (THYRIX_SANITIZE) in CI.
 
+#include "support/BoxPairs.h"
+
 #include <ThyrixLite/Border.h>
 #include <ThyrixLite/BroadPhase.h>
 #include <ThyrixLite/Circle.h>
@@ -27,7 +29,8 @@
 namespace thyrix {
 namespace {
 
-using Pair = std::pair<std::uint32_t, std::uint32_t>;
+using test::Pair;
+using test::sortedPairs;
 
 constexpr real nan = std::numeric_limits<real>::quiet_NaN();
 constexpr real inf = std::numeric_limits<real>::infinity();
@@ -38,18 +41,6 @@ std::vector<Pair> allPairs(const std::vector<BoundingBox>& boxes) {
   for (std::uint32_t i = 0; i < boxes.size(); ++i)
     for (std::uint32_t j = i + 1; j < boxes.size(); ++j)
       if (boxes[i].overlaps(boxes[j])) pairs.emplace_back(i, j);
-  return pairs;
-}
-
-/// The broad phase's pairs, each put first < second as documented, sorted (the order is each
-/// path's own; the set is what BoundingBox::overlaps says).
-std::vector<Pair> sortedPairs(const std::vector<BoxPair>& found) {
-  std::vector<Pair> pairs;
-  for (const BoxPair& p : found) {
-    EXPECT_LT(p.first, p.second);
-    pairs.emplace_back(p.first, p.second);
-  }
-  std::sort(pairs.begin(), pairs.end());
   return pairs;
 }
 

@@ -2,6 +2,8 @@
 // documented rule (BroadPhase.h, BroadPhase.cpp). Detection appends contacts in this order, so
 // a faster grid must keep it exactly, not only the set of pairs.
 
+#include "support/BoxPairs.h"
+
 #include <ThyrixLite/BroadPhase.h>
 #include <Tools/MTRandom.h>
 
@@ -17,7 +19,8 @@
 namespace thyrix {
 namespace {
 
-using Pair = std::pair<std::uint32_t, std::uint32_t>;
+using test::Pair;
+using test::shuffleBoxes;
 
 real extentOf(const BoundingBox& b) {
   return std::max(b.upper.x - b.lower.x, b.upper.y - b.lower.y);
@@ -91,9 +94,7 @@ std::vector<BoundingBox> pileBoxes(std::uint32_t seed, int count, int grown, dou
     const double h = half + (i < grown ? random.uniform(0, 0.3) : random.uniform(0, 0.01));
     boxes.push_back({{real(cx - h), real(cy - h)}, {real(cx + h), real(cy + h)}});
   }
-  MTRandom shuffle(seed + 7);  // the larger ones anywhere in the list
-  for (std::size_t i = boxes.size(); i > 1; --i)
-    std::swap(boxes[i - 1], boxes[shuffle.integer(static_cast<std::uint32_t>(i))]);
+  shuffleBoxes(boxes, seed + 7);  // the larger ones anywhere in the list
   return boxes;
 }
 
@@ -109,9 +110,7 @@ std::vector<BoundingBox> mixedBoxes(std::uint32_t seed, int count, int oversized
     const double y = random.uniform(-world, world);
     boxes.push_back({{real(x), real(y)}, {real(x + side), real(y + side * random.uniform())}});
   }
-  MTRandom shuffle(seed + 3);
-  for (std::size_t i = boxes.size(); i > 1; --i)
-    std::swap(boxes[i - 1], boxes[shuffle.integer(static_cast<std::uint32_t>(i))]);
+  shuffleBoxes(boxes, seed + 3);
   return boxes;
 }
 

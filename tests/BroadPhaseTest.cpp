@@ -2,6 +2,7 @@
 // with first < second, deterministically and without allocating once warmed up.
 
 #include "support/AllocationCounter.h"
+#include "support/BoxPairs.h"
 
 #include <ThyrixLite/BroadPhase.h>
 #include <Tools/MTRandom.h>
@@ -22,7 +23,9 @@
 namespace thyrix {
 namespace {
 
-using Pair = std::pair<std::uint32_t, std::uint32_t>;
+using test::Pair;
+using test::shuffleBoxes;
+using test::sortedPairs;
 
 constexpr Vector2 vec(double x, double y) { return {real(x), real(y)}; }
 
@@ -42,17 +45,6 @@ std::vector<Pair> bruteForce(const std::vector<BoundingBox>& boxes) {
     }
   }
   return pairs;
-}
-
-/// The broad phase's pairs, checked to be ordered within each pair, then sorted.
-std::vector<Pair> sortedPairs(const std::vector<BoxPair>& pairs) {
-  std::vector<Pair> sorted;
-  for (const BoxPair& p : pairs) {
-    EXPECT_LT(p.first, p.second);
-    sorted.emplace_back(p.first, p.second);
-  }
-  std::sort(sorted.begin(), sorted.end());
-  return sorted;
 }
 
 /// Checks the broad phase against brute force: the same set, each pair once.
@@ -85,10 +77,7 @@ std::vector<BoundingBox> randomBoxes(std::uint32_t seed, int count, int oversize
     boxes.push_back(
         {origin + vec(x * scale, y * scale), origin + vec((x + w) * scale, (y + h) * scale)});
   }
-  // The oversized boxes anywhere in the list, not only first.
-  MTRandom shuffle(seed + 1);
-  for (std::size_t i = boxes.size(); i > 1; --i)
-    std::swap(boxes[i - 1], boxes[shuffle.integer(static_cast<std::uint32_t>(i))]);
+  shuffleBoxes(boxes, seed + 1);  // the oversized boxes anywhere in the list
   return boxes;
 }
 
