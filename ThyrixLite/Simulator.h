@@ -178,6 +178,9 @@ class Simulator : public World {
   void addCachedBox(std::uint32_t shape, Vector2& boxMin, Vector2& boxMax) const;
   void updateShape(std::uint32_t shape, bool poseKnown, bool standalone, Vector2& boxMin,
                    Vector2& boxMax);
+  /// updateShape for a circle at centre @p r; @return its travel.
+  real updateCircle(std::uint32_t shape, Vector2 r, bool poseKnown, Vector2& boxMin,
+                    Vector2& boxMax);
   /// updateShape for a capsule, @p primitive its primitive (also called by
   /// updateComposedBody's loop, with the arrays it holds).
   void updateCapsule(std::uint32_t shape, Primitive& primitive, ShapePose& pose,
@@ -255,10 +258,6 @@ class Simulator : public World {
   std::vector<Primitive*> sensingPrimitives_;  // primitives with tactile sensors, this step
   std::vector<BoundingBox> gridBoxes_;
   std::vector<BoxPair> pairs_;
-  // detection-side scratch
-  /// updateShape and updateBody's end for a circle that is its body (@p state's).
-  void updateStandaloneCircle(std::uint32_t shape, Vector2 r, bool poseKnown, PhysicalObject& body,
-                              BodyState& state);
   BroadPhase broadPhase_;
   // Rest skipping (SimulatorContacts.cpp): what the last detection saw.
   std::vector<BodyState> bodyStates_;

@@ -159,6 +159,36 @@ THYRIX_FORCE_INLINE void Simulator::updateCapsule(std::uint32_t s, Primitive& pr
                         poseKnown, gridBoxes_[slot], boxMin, boxMax);
 }
 
+// A circle: its geometry does not depend on its angle. Its axis is its centre twice, so that
+// addCachedBox reads its box as a capsule's (min and max of equal values, which are that
+// value, as are the capsule formulas with both ends at the centre). The travel is returned
+// as computed (the caller that needs it would otherwise read it back from memory).
+THYRIX_FORCE_INLINE real Simulator::updateCircle(std::uint32_t s, Vector2 r, bool poseKnown,
+                                                 Vector2& boxMin, Vector2& boxMax) {
+  ShapeGeometry& g = geometry_[s];
+  const Vector2 last = g.p0;
+  g.p0 = r;
+  g.p1 = r;
+  const real radius = g.radius;
+  include(boxMin, boxMax, r - Vector2{radius, radius}, r + Vector2{radius, radius});
+  const std::uint32_t slot = gridSlot_[s];
+  gridMovedBits_[slot / 64] |= std::uint64_t{1} << (slot % 64);
+  // How far the shape went in the last step, a bound on how far it goes in this one if it
+  // keeps its speed: |dx| + |dy| (no square root; at most 1.42 times the distance), capped
+  // at the radius (a shape moved by hand did not travel).
+  real travel = 0;
+  if (poseKnown) {
+    const Vector2 d = r - last;
+    travel = std::min(geometryTravel_ * (std::abs(d.x) + std::abs(d.y)), radius);
+  }
+  g.travel = travel;
+  // The shape's own box (not the body's), widened by its speculative margin and travel.
+  const real widening = radius + g.margin + travel;
+  const Vector2 reach{widening, widening};
+  gridBoxes_[slot] = {r - reach, r + reach};
+  return travel;
+}
+
 // Recomputes shape @p s's geometry and grid box, and widens the body box (@p boxMin,
 // @p boxMax) by its box without margin; a half-plane is unbounded: no box, not in the grid.
 // Radius and margin are not recomputed: they are in geometry_ since registration (the margin
@@ -185,64 +215,11 @@ THYRIX_FORCE_INLINE void Simulator::updateShape(std::uint32_t s, bool poseKnown,
     case ShapeType::Circle:
       break;
   }
-  // A circle: its geometry does not depend on its angle. Its axis is its centre twice, so
-  // that addCachedBox reads its box as a capsule's (min and max of equal values, which are
-  // that value, as are the capsule formulas below with both ends at the centre).
-  const Vector2 last = g.p0;
-  g.p0 = r;
-  g.p1 = r;
   if (!standalone) {
     pose.r = r;
     pose.alpha = alpha;
   }
-  include(boxMin, boxMax, r - Vector2{g.radius, g.radius}, r + Vector2{g.radius, g.radius});
-  const std::uint32_t slot = gridSlot_[s];
-  gridMovedBits_[slot / 64] |= std::uint64_t{1} << (slot % 64);
-  // How far the shape went in the last step, a bound on how far it goes in this one if it
-  // keeps its speed: |dx| + |dy| (no square root; at most 1.42 times the distance), capped
-  // at the radius (a shape moved by hand did not travel).
-  g.travel = 0;
-  if (poseKnown) {
-    const Vector2 d = r - last;
-    g.travel = std::min(geometryTravel_ * (std::abs(d.x) + std::abs(d.y)), g.radius);
-  }
-  // The shape's own box (not the body's), widened by its speculative margin and travel.
-  const real widening = g.radius + g.margin + g.travel;
-  const Vector2 reach{widening, widening};
-  gridBoxes_[slot] = {r - reach, r + reach};
-}
-
-// updateShape and the rest of updateBody for a circle that is its body (a pile's), at centre
-// @p r: the same operations in the same order on the same values, so the same bits, without
-// the body box built through references from the empty box (GCC kept it on the stack), the
-// shape's type dispatch and the travel read back from memory (measured with the next change:
-// updateGeometry took 140 instructions a circle of pile1000, not 159). The body box is the
-// union of the empty box and the circle's, as std::min and std::max take them (a NaN centre
-// gives the empty box's side, as before).
-THYRIX_FORCE_INLINE void Simulator::updateStandaloneCircle(std::uint32_t s, Vector2 r,
-                                                           bool poseKnown, PhysicalObject& body,
-                                                           BodyState& state) {
-  ShapeGeometry& g = geometry_[s];
-  const Vector2 last = g.p0;
-  g.p0 = r;
-  g.p1 = r;
-  const real radius = g.radius;
-  const Vector2 lower = r - Vector2{radius, radius};
-  const Vector2 upper = r + Vector2{radius, radius};
-  body.boxMin = {std::min(realMax, lower.x), std::min(realMax, lower.y)};
-  body.boxMax = {std::max(-realMax, upper.x), std::max(-realMax, upper.y)};
-  const std::uint32_t slot = gridSlot_[s];
-  gridMovedBits_[slot / 64] |= std::uint64_t{1} << (slot % 64);
-  real travel = 0;
-  if (poseKnown) {
-    const Vector2 d = r - last;
-    travel = std::min(geometryTravel_ * (std::abs(d.x) + std::abs(d.y)), radius);
-  }
-  g.travel = travel;
-  const real widening = radius + g.margin + travel;
-  const Vector2 reach{widening, widening};
-  gridBoxes_[slot] = {r - reach, r + reach};
-  state.restsCheaply = travel == 0;
+  updateCircle(s, r, poseKnown, boxMin, boxMax);
 }
 
 // Inline (forced: GCC kept a call, which cost a pile of moving bodies 1% more instructions):
@@ -275,20 +252,22 @@ THYRIX_FORCE_INLINE void Simulator::updateBody(std::uint32_t index, bool changed
     // A shape that travelled in the last step has a wider margin, narrowed when it stops.
     if (!changed && geometry_[s].travel == 0) return;
     shapeMoved[s] = 1;
-    if (shapes_[s].type == ShapeType::Circle) {  // a crowd's body: written out, see below
-      updateStandaloneCircle(s, primitive.r, known, body, state);
-      return;
-    }
     // The body box is the union of its shapes' boxes, taken in shape order (so NaNs and
     // signed zeros come out as they always did), starting from the empty box. (Declared here:
     // GCC stored it on the stack before the branches, for every body.)
     Vector2 boxMin{realMax, realMax};
     Vector2 boxMax{-realMax, -realMax};
-    updateShape(s, known, true, boxMin, boxMax);
+    real travel = 0;
+    if (shapes_[s].type == ShapeType::Circle) {  // a crowd's body: no dispatch, travel at hand
+      travel = updateCircle(s, primitive.r, known, boxMin, boxMax);
+    } else {
+      updateShape(s, known, true, boxMin, boxMax);
+      travel = geometry_[s].travel;
+    }
     body.boxMin = boxMin;
     body.boxMax = boxMax;
     // While it travels, the body is looked at in this loop even when its pose stays the same.
-    state.restsCheaply = geometry_[s].travel == 0;
+    state.restsCheaply = travel == 0;
     return;
   }
   updateComposedBody(state, changed, known);
