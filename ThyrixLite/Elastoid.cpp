@@ -41,6 +41,8 @@ void Elastoid::computeDerivativesWithoutContacts() {
   PhysicalObject::computeDerivativesWithoutContacts();
 }
 
+void Elastoid::applyWeight(Vector2 /*gravity*/) {}
+
 void Elastoid::integrate(real /*dt*/) {}
 
 void Elastoid::validate() const {

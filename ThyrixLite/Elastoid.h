@@ -40,6 +40,9 @@ class Elastoid : public PhysicalObject {
 
   /// Applies the links' forces to the bodies (phase 5; the bodies come next in the same phase).
   void computeDerivativesWithoutContacts() override;
+  /// Nothing: the elastoid has no mass of its own, and its bodies, registered as objects, are
+  /// weighed in their own turn (once each).
+  void applyWeight(Vector2 gravity) override;
   /// The elastoid has no pose of its own to integrate.
   void integrate(real dt) override;
   void validate() const override;

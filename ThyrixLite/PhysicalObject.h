@@ -67,7 +67,8 @@ class PhysicalObject : public GraphicalObject {
   std::span<ContactInfo> contacts;
 
   /// Phase 5 of a step: velocities from the accumulated external force and torque alone,
-  /// `v = F / m`, `omega = torque / I`; the accumulators are then reset to zero.
+  /// `v = F / m`, `omega = torque / I`; the accumulators are then reset to zero. (With a
+  /// gravity field, the simulator has added the weight to them just before: applyWeight().)
   virtual void computeDerivativesWithoutContacts() {
     if (unpushed() && m > 0 && I > 0) {
       // Unpushed (most bodies at rest): +0 divided by a positive mass is +0, so the three
@@ -86,6 +87,21 @@ class PhysicalObject : public GraphicalObject {
     }
     externalForce = {};
     externalTorque = 0;
+  }
+
+  /// Phase 5 of a step, while the simulator has a gravity field (Simulator::setGravity()): adds
+  /// this object's weight in the field @p gravity (m/s) to its accumulators, just before its
+  /// computeDerivativesWithoutContacts(). The default adds `m * gravity` to `externalForce` (at
+  /// the centre of mass, no torque), nothing for a fixed object.
+  ///
+  /// The simulator calls it, once per step, only for objects whose class overrides a step
+  /// hook; the core shapes (Circle, CappedRectangle, Border, ComposedPhysicalObject) move at
+  /// `F / m + gravity` inside their own velocity computation instead, which gives the same
+  /// velocities up to the rounding of `(F + m g) / m`. Override it for an object whose parts
+  /// move relative to each other (an articulated agent weighs each body at its own centre of
+  /// mass) or that has no mass of its own (an Elastoid, whose bodies are weighed as objects).
+  virtual void applyWeight(Vector2 gravity) {
+    if (!fixed) externalForce += gravity * m;
   }
 
   /// Phase 7 of a step: sensors to controller to motor forces for the next step.
@@ -160,6 +176,30 @@ class PhysicalObject : public GraphicalObject {
     using Bits = std::conditional_t<sizeof(real) == 8, std::uint64_t, std::uint32_t>;
     return (std::bit_cast<Bits>(externalForce.x) | std::bit_cast<Bits>(externalForce.y) |
             std::bit_cast<Bits>(externalTorque)) == 0;
+  }
+
+  /// The default computeDerivativesWithoutContacts() in the gravity field @p gravity (finite,
+  /// not zero, no component -0): `v = F / m + gravity` for a movable body, `omega` as without
+  /// the field. Simulator::advanceTime() runs it inline for the core shapes while a field is
+  /// set, and the default hook otherwise, so a world without gravity computes exactly what it
+  /// did before the field existed (`F / m + 0` would turn a velocity -0 into +0).
+  void computeDerivativesInField(Vector2 gravity) {
+    if (unpushed() && m > 0 && I > 0) {
+      // As in the default hook: +0 / m + gravity is gravity, bit for bit (no component -0),
+      // so a body that only its weight pushes (most of a pile) needs no division.
+      v = fixed ? Vector2{} : gravity;
+      omega = 0;
+      return;
+    }
+    if (fixed) {
+      v = {};
+      omega = 0;
+    } else {
+      v = externalForce / m + gravity;
+      omega = externalTorque / I;
+    }
+    externalForce = {};
+    externalTorque = 0;
   }
 
   friend class World;

@@ -42,6 +42,14 @@ void Simulator::setTimestep(real timestep) {
   timestep_ = timestep;
 }
 
+void Simulator::setGravity(Vector2 gravity) {
+  requireFinite(gravity, "Simulator.setGravity.gravity");
+  // + 0 turns -0 into +0 (and leaves every other value as it is): the core shapes' shortcut for
+  // an unpushed body can then write the field itself for +0 / m + gravity.
+  gravity_ = {gravity.x + real(0), gravity.y + real(0)};
+  hasGravity_ = gravity_.x != 0 || gravity_.y != 0;
+}
+
 void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
   // Reserve everything registration will append to, so completing it cannot fail.
   std::size_t shapes = 0;
@@ -147,18 +155,28 @@ void Simulator::advanceTime() {
   detectContacts();
   indexContacts();
   applyMouseForce();
-  // In registration order (an elastoid pushes its bodies, registered after it, before they
-  // compute their velocities); the core shapes without a virtual call, in runs between the
-  // other objects (no flag to test per object).
-  forEachInRuns(
-      objects, customObjects_,
-      [](PhysicalObject& object) { object.PhysicalObject::computeDerivativesWithoutContacts(); },
-      [](PhysicalObject& object) { object.computeDerivativesWithoutContacts(); });
+  computeDerivativesWithoutContacts();
   solveContacts();
   for (const std::uint32_t i : customObjects_) objects[i].control();  // the others do nothing
   integrator.integrateExcept(objects, customObjects_, timestep_);
   ++stepCount_;
   time_ += timestep_;
+}
+
+void Simulator::computeDerivativesInGravity() {
+  // The field is decided once per step, not per object (computeDerivativesWithoutContacts()).
+  // The core shapes add it to their velocity in their own pass (no extra pass over the objects,
+  // no virtual call); the other objects add their weight to their accumulators by one virtual
+  // call each, just before their own hook, since only they know where their mass is (an
+  // articulated agent's links; an elastoid has none, its bodies are objects of their own).
+  const Vector2 gravity = gravity_;
+  forEachInRuns(
+      objects, customObjects_,
+      [gravity](PhysicalObject& object) { object.computeDerivativesInField(gravity); },
+      [gravity](PhysicalObject& object) {
+        object.applyWeight(gravity);
+        object.computeDerivativesWithoutContacts();
+      });
 }
 
 void Simulator::eraseContacts() {

@@ -37,7 +37,8 @@ struct StepStatistics {
 ///
 /// One call of advanceTime() runs, in order (DESIGN.md section 3):
 /// 1. erase the last step's contacts; 2. detectContacts(); 3. indexContacts();
-/// 4. applyMouseForce(); 5. each object's computeDerivativesWithoutContacts();
+/// 4. applyMouseForce(); 5. computeDerivativesWithoutContacts() (each object's, in the gravity
+/// field);
 /// 6. solveContacts(); 7. each object's control(); 8. integrator.integrate().
 /// The phases are public so that a program can run its own variant of the step.
 ///
@@ -67,6 +68,23 @@ class Simulator : public World {
   void indexContacts();
   /// Phase 4: while dragging, adds the force that pulls the grabbed point to the mouse.
   void applyMouseForce();
+  /// Phase 5: each object's velocities without contacts, in registration order (an Elastoid
+  /// pushes its bodies, registered after it, before they compute theirs): its
+  /// PhysicalObject::computeDerivativesWithoutContacts(), in the gravity field (setGravity()).
+  void computeDerivativesWithoutContacts() {
+    // Inline, so that advanceTime() runs a world without gravity as it did before the field
+    // existed: one test per step, then the same loop (out of line, it cost the arena
+    // benchmark 12 instructions a step). The core shapes' hooks are called without a virtual
+    // call, in runs between the other objects (no flag to test per object).
+    if (hasGravity_) {
+      computeDerivativesInGravity();
+      return;
+    }
+    forEachInRuns(
+        objects, customObjects_,
+        [](PhysicalObject& object) { object.PhysicalObject::computeDerivativesWithoutContacts(); },
+        [](PhysicalObject& object) { object.computeDerivativesWithoutContacts(); });
+  }
   /// Phase 6: contact forces (the chosen solver, island by island), then final velocities;
   /// the tactile sensors then read the forces.
   void solveContacts();
@@ -91,6 +109,28 @@ class Simulator : public World {
   [[nodiscard]] std::uint64_t stepCount() const { return stepCount_; }
   /// Simulated time so far (s).
   [[nodiscard]] double time() const { return time_; }
+
+  /// Sets the world's gravity field @p gravity (m/s), {0, 0} by default: from the next step on,
+  /// every movable object of quasistatic mass `m` feels its weight `m * gravity` at its centre
+  /// of mass, as if it were added to `externalForce` before each step, so a free body falls at
+  /// the velocity `gravity`. (Under `F = m v` a field is a velocity, not an acceleration: to
+  /// match a Newtonian world with gravitational acceleration `a` and linear damping `d` (1/s),
+  /// use `gravity = a / d`; a = 10 m/s^2 and d = 10 /s give a fall at 1 m/s.)
+  ///
+  /// Fixed objects feel nothing. The core shapes (Circle, CappedRectangle, Border,
+  /// ComposedPhysicalObject) move at `externalForce / m + gravity`, computed in the same pass
+  /// as their velocities; other objects get PhysicalObject::applyWeight() just before their
+  /// computeDerivativesWithoutContacts(), which adds `m * gravity` to `externalForce` (an
+  /// articulated agent weighs each link and its base at its own centre of mass; an Elastoid
+  /// weighs nothing itself, its bodies are weighed as objects). The two agree up to the
+  /// rounding of `(F + m g) / m`, and exactly when `(m g) / m == g`, for a mass that is a power
+  /// of two, say. A zero field (either sign of zero) adds nothing: the steps compute exactly
+  /// what they compute without it.
+  /// @throws InvalidArgument naming "Simulator.setGravity.gravity" unless both coordinates are
+  ///         finite (the field is then unchanged)
+  void setGravity(Vector2 gravity);
+  /// The gravity field (m/s); a coordinate set to -0 reads +0.
+  [[nodiscard]] Vector2 gravity() const { return gravity_; }
 
   /// Chooses the method that solves the contact LCP (Baraff by default).
   void setContactSolver(ContactSolverKind kind) { solverKind_ = kind; }
@@ -168,6 +208,8 @@ class Simulator : public World {
     real halfLength = 0;
   };
 
+  /// computeDerivativesWithoutContacts() with a gravity field that is not zero.
+  void computeDerivativesInGravity();
   void updateGeometry();
   /// updateGeometry for a body that changed (its collision filters with @p newFilters), or
   /// that has several shapes (whose poses are then compared one by one).
@@ -245,6 +287,8 @@ class Simulator : public World {
   void updateTactileSensors();
 
   real timestep_;
+  Vector2 gravity_;          // no component -0 (setGravity())
+  bool hasGravity_ = false;  // gravity_ is not {0, 0}
   std::uint64_t stepCount_ = 0;
   double time_ = 0;
   ContactSolverKind solverKind_ = ContactSolverKind::Baraff;
