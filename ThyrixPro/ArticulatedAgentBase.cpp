@@ -133,6 +133,10 @@ ArticulatedAgentBase::ArticulatedAgentBase(const std::vector<ArticulatedBasePart
   servoTorques_.assign(n, 0);
   limitTorques_.assign(n, 0);
   linkWrenches_.assign(n + 1, Vector3{});
+  bodyMasses_.reserve(n + 1);
+  for (int b = base; b < static_cast<int>(n); ++b) bodyMasses_.push_back(body_.mass(b));
+  linksWeighAlike_ = n > 0 && std::all_of(bodyMasses_.begin() + 1, bodyMasses_.end(),
+                                          [&](real mass) { return mass == bodyMasses_[1]; });
   for (std::size_t i = 0; i < n; ++i)
     if (layout.links[i].hasLimits) limitedJoints_.push_back(static_cast<int>(i));
 
@@ -301,6 +305,31 @@ void addToEachWrench(Vector3* wrenches, std::size_t count, Real torque, Vector2 
   }
 }
 
+/// Adds (@p torque, @p masses[k] * @p gravity) to each of the @p count wrenches from
+/// @p wrenches on, as addToEachWrench() does (one SSE2 pair per wrench's force in double, the
+/// same multiplications and additions).
+template <class Real>
+void addWeightToEachWrench(Vector3* wrenches, const Real* masses, std::size_t count, Real torque,
+                           Vector2 gravity) {
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<Real, double>) {
+    const __m128d field = _mm_set_pd(gravity.y, gravity.x);
+    for (std::size_t k = 0; k < count; ++k) {
+      auto* const w = reinterpret_cast<Real*>(&wrenches[k]);
+      w[0] += torque;
+      const __m128d weight = _mm_mul_pd(_mm_set1_pd(masses[k]), field);
+      _mm_storeu_pd(w + 1, _mm_add_pd(_mm_loadu_pd(w + 1), weight));
+    }
+    return;
+  }
+#endif
+  for (std::size_t k = 0; k < count; ++k) {
+    wrenches[k].x += torque;
+    wrenches[k].y += masses[k] * gravity.x;
+    wrenches[k].z += masses[k] * gravity.y;
+  }
+}
+
 }  // namespace
 
 void ArticulatedAgentBase::applyForceAtEveryLinkCenterOfMass(Vector2 force) {
@@ -309,6 +338,21 @@ void ArticulatedAgentBase::applyForceAtEveryLinkCenterOfMass(Vector2 force) {
   // The torque, the same for every link, as applyLinkForceAtCenterOfMass() computes it.
   addToEachWrench<real>(linkWrenches_.data() + 1, linkWrenches_.size() - 1, cross(Vector2{}, force),
                         force);
+}
+
+void ArticulatedAgentBase::applyWeight(Vector2 gravity) {
+  // applyLinkForceAtCenterOfMass(b, m_b g)'s operations. Its torque cross((0, 0), m_b g) is a
+  // zero whose sign follows the signs of m_b g's coordinates, which are g's (m_b > 0): the
+  // same bits for every body, cross((0, 0), g), computed once.
+  const real torque = cross(Vector2{}, gravity);
+  if (!fixed)  // a fixed base weighs nothing
+    addWeightToEachWrench<real>(linkWrenches_.data(), bodyMasses_.data(), 1, torque, gravity);
+  const std::size_t links = linkWrenches_.size() - 1;
+  if (linksWeighAlike_)  // one weight for all (a uniform chain), without a multiplication each
+    addToEachWrench<real>(linkWrenches_.data() + 1, links, torque, bodyMasses_[1] * gravity);
+  else
+    addWeightToEachWrench<real>(linkWrenches_.data() + 1, bodyMasses_.data() + 1, links, torque,
+                                gravity);
 }
 
 void ArticulatedAgentBase::refuseLinkForce(int b, Vector2 force, Vector2 worldPoint) const {

@@ -243,6 +243,11 @@ class ArticulatedAgentBase : public MultiBodyObject {
   /// are set once, when the agent is built, as its selfCollision() table, which the simulator
   /// reads; this answers from it for two of the agent's primitives.
   [[nodiscard]] bool selfCollides(const Primitive& a, const Primitive& b) const;
+  /// The weight in the gravity field @p gravity (Simulator::setGravity()): each link, and the
+  /// base unless the agent is `fixed`, gets `mass(b) * gravity` at its own centre of mass, the
+  /// same bits as applyLinkForceAtCenterOfMass(b, mass(b) * gravity) for each body b (base
+  /// first), without its checks (the simulator checked the field). One call per step.
+  void applyWeight(Vector2 gravity) override;
   /// Also checks limitMargin (finite, non-negative) and that every primitive is the agent's own
   /// (an ArticulatedComponent).
   void validate() const override;
@@ -288,6 +293,10 @@ class ArticulatedAgentBase : public MultiBodyObject {
   std::vector<Vector3> linkWrenches_;
   /// The joints that have limits, in index order.
   std::vector<int> limitedJoints_;
+  /// Each body's quasistatic mass, base first (body b at b + 1), side by side for applyWeight().
+  std::vector<real> bodyMasses_;
+  /// Every link has the same mass (and there is one): applyWeight() computes one weight.
+  bool linksWeighAlike_ = false;
 
  private:
   struct Layout;
