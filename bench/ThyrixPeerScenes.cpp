@@ -49,6 +49,9 @@ std::uint64_t ThyrixArena::stateHash() const { return scenes::stateHash(simulato
 ThyrixPile::ThyrixPile(const PileLayout& layout, ContactSolverKind solver)
     : layout_(layout), simulator_(static_cast<real>(layout.timestep)) {
   simulator_.setContactSolver(solver);
+  // The peers' world gravity: a fall at a / d under F = m v, the weight thyrixMass * (a / d) =
+  // peerMass * a on every circle, as a per-step force would give it (the same bits: m = 1).
+  simulator_.setGravity({0, -static_cast<real>(layout.gravity / peerDamping)});
   // The borders of scenes::addPile: the floor and the two walls.
   simulator_.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
   simulator_.registerObject(
@@ -64,11 +67,7 @@ ThyrixPile::ThyrixPile(const PileLayout& layout, ContactSolverKind solver)
   }
 }
 
-void ThyrixPile::step() {
-  const Vector2 weight{0, -static_cast<real>(peerMass * layout_.gravity)};
-  for (Circle* circle : circles_) circle->externalForce += weight;
-  simulator_.advanceTime();
-}
+void ThyrixPile::step() { simulator_.advanceTime(); }
 
 std::uint64_t ThyrixPile::stateHash() const { return scenes::stateHash(simulator_); }
 
@@ -83,6 +82,9 @@ std::vector<Point> ThyrixPile::centres() const {
 ThyrixChain::ThyrixChain(const ChainLayout& layout, ContactSolverKind solver)
     : layout_(layout), simulator_(static_cast<real>(layout.timestep)) {
   simulator_.setContactSolver(solver);
+  // The peers' world gravity, a / d under F = m v: each link is weighed at its centre of mass
+  // (the fixed base is not), thyrixMass * (a / d) = peerMass * a.
+  simulator_.setGravity({0, -static_cast<real>(layout.gravity / peerDamping)});
   const real halfLength = static_cast<real>(layout.halfLength);
   const real radius = static_cast<real>(layout.radius);
   ArticulatedLimb limb(Vector2{});
@@ -108,13 +110,7 @@ ThyrixChain::ThyrixChain(const ChainLayout& layout, ContactSolverKind solver)
   agent_ = &simulator_.registerObject(std::move(agent));
 }
 
-void ThyrixChain::step() {
-  const Vector2 weight{0, -static_cast<real>(peerMass * layout_.gravity)};
-  // At every link's centre of mass: the same bits as applyLinkForce(i, weight,
-  // centerOfMass(i)) for each link i.
-  agent_->applyForceAtEveryLinkCenterOfMass(weight);
-  simulator_.advanceTime();
-}
+void ThyrixChain::step() { simulator_.advanceTime(); }
 
 std::uint64_t ThyrixChain::stateHash() const {
   StateHash hash;

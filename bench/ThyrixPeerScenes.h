@@ -38,8 +38,9 @@ class ThyrixArena {
   ArenaPush push_{layout_};
 };
 
-/// pileN in Thyrix: borders for the open box, circles of quasistatic mass thyrixMass pushed
-/// down each step by their peers' weight (peerMass g), so they fall at g / peerDamping = 1 m/s.
+/// pileN in Thyrix: borders for the open box, circles of quasistatic mass thyrixMass in the
+/// world gravity field g / peerDamping (Simulator::setGravity()), so each is pushed down by its
+/// peer's weight (peerMass g) and falls at g / peerDamping = 1 m/s.
 class ThyrixPile {
  public:
   ThyrixPile(const PileLayout& layout, ContactSolverKind solver);
@@ -61,13 +62,13 @@ class ThyrixPile {
 /// link's capsule runs from its joint to its tip, the peers' cap centres), so the joints sit at
 /// integer x as in the peers. Neighbours do not collide by construction (a link never touches
 /// its parent); other pairs collide, as in the peers. Each link has the quasistatic mass
-/// thyrixMass and peerDamping times the peers' moment of inertia, and is pulled down each step
-/// by its peer's weight (peerMass g) at its centre of mass, so it moves and turns as a peer link
-/// damped by peerDamping would.
+/// thyrixMass and peerDamping times the peers' moment of inertia, and is pulled down by its
+/// peer's weight (peerMass g) at its centre of mass, the world gravity field g / peerDamping
+/// (Simulator::setGravity()), so it moves and turns as a peer link damped by peerDamping would.
 class ThyrixChain {
  public:
   ThyrixChain(const ChainLayout& layout, ContactSolverKind solver);
-  /// Applies the weights, then advances the world by one step.
+  /// Advances the world by one step.
   void step();
   [[nodiscard]] std::size_t contactCount() const { return simulator_.contacts.size(); }
   /// FNV-1a over every link's centre of mass, angle, velocity and angular velocity (the base is
