@@ -69,25 +69,7 @@ class PhysicalObject : public GraphicalObject {
   /// Phase 5 of a step: velocities from the accumulated external force and torque alone,
   /// `v = F / m`, `omega = torque / I`; the accumulators are then reset to zero. (With a
   /// gravity field, the simulator has added the weight to them just before: applyWeight().)
-  virtual void computeDerivativesWithoutContacts() {
-    if (unpushed() && m > 0 && I > 0) {
-      // Unpushed (most bodies at rest): +0 divided by a positive mass is +0, so the three
-      // divisions are skipped with the same result, bit for bit, fixed or not; and the
-      // accumulators already hold +0, so they need no reset.
-      v = {};
-      omega = 0;
-      return;
-    }
-    if (fixed) {
-      v = {};
-      omega = 0;
-    } else {
-      v = externalForce / m;
-      omega = externalTorque / I;
-    }
-    externalForce = {};
-    externalTorque = 0;
-  }
+  virtual void computeDerivativesWithoutContacts() { velocitiesFromAccumulators<false>({}); }
 
   /// Phase 5 of a step, while the simulator has a gravity field (Simulator::setGravity()): adds
   /// this object's weight in the field @p gravity (m/s) to its accumulators, just before its
@@ -183,11 +165,23 @@ class PhysicalObject : public GraphicalObject {
   /// the field. Simulator::advanceTime() runs it inline for the core shapes while a field is
   /// set, and the default hook otherwise, so a world without gravity computes exactly what it
   /// did before the field existed (`F / m + 0` would turn a velocity -0 into +0).
-  void computeDerivativesInField(Vector2 gravity) {
+  void computeDerivativesInField(Vector2 gravity) { velocitiesFromAccumulators<true>(gravity); }
+
+  /// The default hook's body, without (@p InField false: @p gravity is not read) or with the
+  /// gravity field @p gravity added to a movable body's velocity. One body for both, the field's
+  /// addition compiled out of the default hook: the same instructions and bits as before.
+  template <bool InField>
+  void velocitiesFromAccumulators([[maybe_unused]] Vector2 gravity) {
     if (unpushed() && m > 0 && I > 0) {
-      // As in the default hook: +0 / m + gravity is gravity, bit for bit (no component -0),
-      // so a body that only its weight pushes (most of a pile) needs no division.
-      v = fixed ? Vector2{} : gravity;
+      // Unpushed (most bodies at rest): +0 divided by a positive mass is +0, so the three
+      // divisions are skipped with the same result, bit for bit, fixed or not; and the
+      // accumulators already hold +0, so they need no reset. In a field, +0 / m + gravity is
+      // gravity, bit for bit (no component -0): a body that only its weight pushes (most of a
+      // pile) needs no division either.
+      if constexpr (InField)
+        v = fixed ? Vector2{} : gravity;
+      else
+        v = {};
       omega = 0;
       return;
     }
@@ -195,7 +189,10 @@ class PhysicalObject : public GraphicalObject {
       v = {};
       omega = 0;
     } else {
-      v = externalForce / m + gravity;
+      if constexpr (InField)
+        v = externalForce / m + gravity;
+      else
+        v = externalForce / m;
       omega = externalTorque / I;
     }
     externalForce = {};
