@@ -76,9 +76,10 @@ class PhysicalObject : public GraphicalObject {
   /// computeDerivativesWithoutContacts(). The default adds `m * gravity` to `externalForce` (at
   /// the centre of mass, no torque), nothing for a fixed object.
   ///
-  /// The simulator calls it, once per step, only for objects whose class overrides a step
-  /// hook; the core shapes (Circle, CappedRectangle, Border, ComposedPhysicalObject) move at
-  /// `F / m + gravity` inside their own velocity computation instead, which gives the same
+  /// The simulator calls it, once per step, for every registered object that is not exactly one
+  /// of the core shapes (Circle, CappedRectangle, Border, ComposedPhysicalObject, told by
+  /// type: a subclass of Circle is weighed here even if it overrides nothing); the core shapes
+  /// move at `F / m + gravity` inside their own velocity computation instead, which gives the same
   /// velocities up to the rounding of `(F + m g) / m`. Override it for an object whose parts
   /// move relative to each other (an articulated agent weighs each body at its own centre of
   /// mass) or that has no mass of its own (an Elastoid, whose bodies are weighed as objects).

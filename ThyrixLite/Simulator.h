@@ -121,11 +121,12 @@ class Simulator : public World {
   /// ComposedPhysicalObject) move at `externalForce / m + gravity`, computed in the same pass
   /// as their velocities; other objects get PhysicalObject::applyWeight() just before their
   /// computeDerivativesWithoutContacts(), which adds `m * gravity` to `externalForce` (an
-  /// articulated agent weighs each link and its base at its own centre of mass; an Elastoid
-  /// weighs nothing itself, its bodies are weighed as objects). The two agree up to the
-  /// rounding of `(F + m g) / m`, and exactly when `(m g) / m == g`, for a mass that is a power
-  /// of two, say. A zero field (either sign of zero) adds nothing: the steps compute exactly
-  /// what they compute without it.
+  /// articulated agent weighs each link, and its base unless fixed, at its own centre of mass;
+  /// an Elastoid weighs nothing itself, its bodies are weighed as objects). The two agree up
+  /// to the rounding of `(F + m g) / m`; exactly for a mass that is a power of two (both are
+  /// then `F / m + g` rounded once), not for every mass with `(m g) / m == g`. A zero field
+  /// (either sign of zero) adds nothing: the steps compute exactly what they compute without
+  /// it.
   /// @throws InvalidArgument naming "Simulator.setGravity.gravity" unless both coordinates are
   ///         finite (the field is then unchanged)
   void setGravity(Vector2 gravity);
