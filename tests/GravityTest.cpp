@@ -55,6 +55,31 @@ class CustomCircle : public Circle {
   int controls = 0;
 };
 
+/// A circle with its own phase-5 hook (that calls the default one) but the default
+/// applyWeight(): the simulator weighs it once, by applyWeight(), before the hook.
+class OwnHookCircle : public Circle {
+ public:
+  OwnHookCircle(real radius, real mass) : Circle(radius, mass) {}
+  void computeDerivativesWithoutContacts() override {
+    ++hooks;
+    Circle::computeDerivativesWithoutContacts();
+  }
+  int hooks = 0;
+};
+
+/// A circle that overrides nothing: not a core shape by its type, so weighed by applyWeight().
+class PlainSubclassCircle : public Circle {
+ public:
+  PlainSubclassCircle(real radius, real mass) : Circle(radius, mass) {}
+};
+
+/// A circle that floats: its applyWeight() adds nothing.
+class Balloon : public Circle {
+ public:
+  Balloon(real radius, real mass) : Circle(radius, mass) {}
+  void applyWeight(Vector2 /*gravity*/) override {}
+};
+
 /// Two bodies (a circle and a custom circle, mass 2 each) joined centre to centre by a link at
 /// its rest length, so it pulls neither.
 class Pair : public Elastoid {
@@ -126,6 +151,40 @@ TEST(Gravity, FreeBodiesMoveAtTheFieldsVelocityAndFixedOnesStay) {
   EXPECT_EQ(custom.controls, steps);
 }
 
+TEST(Gravity, SubclassesAreWeighedOnceThroughApplyWeight) {
+  // A subclass of Circle with its own hook, one with no override at all, and one whose
+  // applyWeight() adds nothing: the first two fall at g (not 2 g: weighed once; mass 4, so
+  // (m g) / m is g exactly), the balloon stays. Bodies registered after steps have run feel
+  // the field from their first step.
+  const Vector2 g{real(0.25), real(-1.5)};
+  Simulator simulator(real(0.01));
+  simulator.setGravity(g);
+  auto& early = simulator.registerObject(std::make_unique<Circle>(real(0.5), real(3)));
+  for (int step = 0; step < 5; ++step) simulator.advanceTime();
+  auto& ownHook = simulator.registerObject(std::make_unique<OwnHookCircle>(real(0.5), real(4)));
+  auto& plain = simulator.registerObject(std::make_unique<PlainSubclassCircle>(real(0.5), real(4)));
+  auto& balloon = simulator.registerObject(std::make_unique<Balloon>(real(0.5), real(4)));
+  auto& late = simulator.registerObject(std::make_unique<Circle>(real(0.5), real(3)));
+  ownHook.r = {10, 0};
+  plain.r = {20, 0};
+  balloon.r = {30, 0};
+  late.r = {40, 0};
+  for (int step = 0; step < 10; ++step) simulator.advanceTime();
+  EXPECT_EQ(ownHook.hooks, 10);
+  EXPECT_EQ(ownHook.v, g);
+  EXPECT_EQ(plain.v, g);
+  EXPECT_EQ(balloon.v, Vector2{});
+  EXPECT_EQ(balloon.r, (Vector2{30, 0}));
+  EXPECT_EQ(late.v, g);
+  EXPECT_EQ(early.v, g);
+  for (const PhysicalObject* body :
+       {static_cast<const PhysicalObject*>(&ownHook), static_cast<const PhysicalObject*>(&plain)}) {
+    EXPECT_NEAR(body->r.y, g.y * real(0.1), loose);
+    EXPECT_EQ(body->externalForce, Vector2{});
+  }
+  EXPECT_NEAR(late.r.x, 40 + g.x * real(0.1), loose);
+}
+
 TEST(Gravity, AddsToTheVelocityOfThePushedBody) {
   // v = F / m + g, the force reset after use as without a field.
   const Vector2 g{0, -1};
@@ -188,6 +247,48 @@ TEST(Gravity, AFreeArticulatedAgentFallsRigidlyAtTheFieldsVelocity) {
   EXPECT_NEAR(agent.r.y, 50 + g.y * real(0.2), loose);
 }
 
+TEST(Gravity, AFixedBasesLinkHangsStraightDown) {
+  // A fixed base and one free link, laid horizontally: the link's weight turns it about its
+  // joint until its centre of mass is right under the joint; the base does not move.
+  Simulator simulator(real(0.01));
+  simulator.setGravity({0, -2});
+  ArticulatedLimb limb({real(0.5), 0});
+  limb.addLink(-1, 1, real(0.1), real(0.5), 0);
+  auto& agent = simulator.registerObject(std::make_unique<Agent>(
+      std::vector<ArticulatedBasePart>{ArticulatedBasePart::circle(real(0.5), 3)},
+      std::vector<ArticulatedLimb>{limb}));
+  agent.setPose({0, 10}, 0);
+  agent.fixed = true;
+  const Vector2 base = agent.centerOfMass(Agent::base);
+  simulator.advanceTime();
+  EXPECT_LT(agent.jointRate(0), 0) << "the link starts turning down";
+  for (int step = 0; step < 2000; ++step) simulator.advanceTime();
+  EXPECT_EQ(agent.centerOfMass(Agent::base), base);
+  const Vector2 joint = agent.jointPosition(0);
+  EXPECT_NEAR(agent.centerOfMass(0).x, joint.x, loose);
+  EXPECT_NEAR(agent.centerOfMass(0).y, joint.y - real(0.5), loose);
+  EXPECT_NEAR(agent.jointRate(0), 0, loose);
+}
+
+TEST(Gravity, AJointLimitHoldsTheLinksWeightsMoment) {
+  // A fixed base and one horizontal link of mass m and length L whose joint may not turn
+  // down (limits [0, 1]): the limit holds the moment of the link's weight about the joint,
+  // m |g| L / 2 = 0.5 x 2 x 1.2 / 2 = 0.6 N m, and the link stays.
+  Simulator simulator(real(0.01));
+  simulator.setGravity({0, -2});
+  ArticulatedLimb limb({real(0.5), 0});
+  limb.addLink(-1, real(1.2), real(0.1), real(0.5), 0);
+  limb.setLimits(0, 0, 1);
+  auto& agent = simulator.registerObject(std::make_unique<Agent>(
+      std::vector<ArticulatedBasePart>{ArticulatedBasePart::circle(real(0.5), 3)},
+      std::vector<ArticulatedLimb>{limb}));
+  agent.fixed = true;
+  for (int step = 0; step < 50; ++step) simulator.advanceTime();
+  EXPECT_NEAR(agent.limitTorque(0), real(0.6), loose);
+  EXPECT_NEAR(agent.jointAngle(0), 0, real(1e-3));
+  EXPECT_NEAR(agent.jointRate(0), 0, loose);
+}
+
 TEST(Gravity, AnElastoidsBodiesAreWeighedOnceEach) {
   // The elastoid (fixed, infinitely heavy) weighs nothing itself; its bodies, a core circle and
   // a custom one, fall together at g (their link stays at its rest length, 2 along x): counted
@@ -211,8 +312,8 @@ TEST(Gravity, AnElastoidsBodiesAreWeighedOnceEach) {
 // The same bits as the weight added by hand
 
 /// A pile of circles (masses 1/2, 1, 2, 4), capsules and custom circles over a floor between
-/// two walls: for these masses `(m g) / m` is g exactly, so a core shape's `F / m + g` and
-/// `(F + m g) / m` agree to the bit.
+/// two walls: dividing by these masses is exact, so a core shape's `F / m + g` and
+/// `(F + m g) / m` are both `F / m + g` rounded once, to the bit.
 std::vector<PhysicalObject*> addWeighablePile(Simulator& simulator) {
   simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
   simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{1, 0}));
