@@ -8,6 +8,7 @@
 
 #include "TestTolerances.h"
 #include "support/AllocationCounter.h"
+#include "support/SolverCases.h"
 
 #include <Scenes.h>
 #include <ThyrixLite/Border.h>
@@ -40,25 +41,15 @@
 namespace thyrix {
 namespace {
 
+using test::bitsOf;
 using test::isFloat;
 using test::loose;
+using test::solverName;
 using test::tight;
 
 using Agent = ArticulatedAgentQuasistatic;
 
 constexpr real kNaN = std::numeric_limits<real>::quiet_NaN();
-
-const char* solverName(const ::testing::TestParamInfo<ContactSolverKind>& solver) {
-  return solver.param == ContactSolverKind::Baraff ? "Baraff" : "GaussSeidel";
-}
-
-/// The bits of @p value: results that must be identical are compared so (== would take -0 for
-/// 0).
-std::uint64_t bitsOf(real value) {
-  std::uint64_t bits = 0;
-  std::memcpy(&bits, &value, sizeof value);
-  return bits;
-}
 
 /// A circle base (radius 0.5, mass 2) with one chain of @p links links (length 1, radius 0.1,
 /// mass 0.5) attached at its right edge, pointing along +x.
@@ -519,6 +510,18 @@ TEST(ArticulatedAgentSolvers, AgentPushesAFreeCircleInOneIsland) {
   }
 }
 
+/// Expects none of @p agent's self-contacts at @p step between a link and its parent: they
+/// overlap at their joint and must be left untouched.
+void expectNoContactBetweenNeighbours(const Agent& agent, int step) {
+  for (std::size_t k = 0; k < agent.contacts.size(); ++k) {
+    const LinkContactInfo c = agent.linkContact(k);
+    if (c.other != &agent) continue;
+    const int other = Agent::bodyOf(*c.otherPrimitive);
+    EXPECT_NE(agent.parent(c.body), other) << "step " << step;
+    EXPECT_NE(agent.parent(other), c.body) << "step " << step;
+  }
+}
+
 TEST_P(ArticulatedAgentTest, FoldedChainTouchesItselfWithoutInterpenetrating) {
   // A chain of 5 links curled by its joint torques: links that are not neighbours meet (and
   // the last ones reach the base). Self-contacts must appear and hold.
@@ -534,14 +537,7 @@ TEST_P(ArticulatedAgentTest, FoldedChainTouchesItselfWithoutInterpenetrating) {
     simulator.advanceTime();
     self += selfContacts(agent);
     EXPECT_LT(scenes::largestOverlap(simulator), real(0.02)) << "step " << step;
-    // Never between neighbours (a link and its parent overlap at their joint, untouched).
-    for (std::size_t k = 0; k < agent.contacts.size(); ++k) {
-      const LinkContactInfo c = agent.linkContact(k);
-      if (c.other != &agent) continue;
-      const int other = Agent::bodyOf(*c.otherPrimitive);
-      EXPECT_NE(agent.parent(c.body), other) << "step " << step;
-      EXPECT_NE(agent.parent(other), c.body) << "step " << step;
-    }
+    expectNoContactBetweenNeighbours(agent, step);
   }
   EXPECT_GT(self, 0) << "the folded chain should touch itself";
   // Frictionless, the curled chain may keep sliding along itself, but slowly: the contacts,
@@ -612,13 +608,7 @@ TEST_P(ArticulatedAgentTest, FoldedChainAmongManyShapesTouchesItselfAsTheRulesSa
     simulator.advanceTime();
     self += selfContacts(agent);
     // (Links that passed through each other while apart may still overlap: not checked.)
-    for (std::size_t k = 0; k < agent.contacts.size(); ++k) {
-      const LinkContactInfo c = agent.linkContact(k);
-      if (c.other != &agent) continue;
-      const int other = Agent::bodyOf(*c.otherPrimitive);
-      EXPECT_NE(agent.parent(c.body), other) << "step " << step;
-      EXPECT_NE(agent.parent(other), c.body) << "step " << step;
-    }
+    expectNoContactBetweenNeighbours(agent, step);
   }
   EXPECT_GT(self, 0) << "the folded chain should touch itself under the usual rules";
 }

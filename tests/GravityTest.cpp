@@ -5,6 +5,7 @@
 // changes nothing; bad input is refused.
 
 #include "TestTolerances.h"
+#include "support/SolverCases.h"
 
 #include <Scenes.h>
 #include <ThyrixLite/Border.h>
@@ -20,8 +21,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdint>
-#include <cstring>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -29,22 +28,12 @@
 namespace thyrix {
 namespace {
 
+using test::bitsOf;
 using test::loose;
+using test::solverName;
 using test::tight;
 
 using Agent = ArticulatedAgentQuasistatic;
-
-const char* solverName(const ::testing::TestParamInfo<ContactSolverKind>& solver) {
-  return solver.param == ContactSolverKind::Baraff ? "Baraff" : "GaussSeidel";
-}
-
-/// The bits of @p value: results that must be identical are compared so (== would take -0 for
-/// 0).
-std::uint64_t bitsOf(real value) {
-  std::uint64_t bits = 0;
-  std::memcpy(&bits, &value, sizeof value);
-  return bits;
-}
 
 /// A circle that overrides a step hook, so the simulator weighs it through
 /// PhysicalObject::applyWeight() rather than in the core shapes' pass.

@@ -2,6 +2,7 @@
 // bookkeeping of contacts between the global list and the objects' lists.
 
 #include "TestTolerances.h"
+#include "support/SolverCases.h"
 
 #include <Scenes.h>
 #include <ThyrixLite/Border.h>
@@ -19,9 +20,7 @@
 namespace thyrix {
 namespace {
 
-const char* solverName(const ::testing::TestParamInfo<ContactSolverKind>& solver) {
-  return solver.param == ContactSolverKind::Baraff ? "Baraff" : "GaussSeidel";
-}
+using test::solverName;
 
 /// 30 bodies (circles and capsules, radii 0.2 to 0.3) on a loose grid without overlap in a
 /// 6 x 6 box.
