@@ -278,55 +278,31 @@ void ArticulatedAgentBase::clearServo(int i) {
 
 namespace {
 
-/// Adds (@p torque, @p force) to each of the @p count wrenches from @p wrenches on. In
-/// double, each wrench's force as one SSE2 pair: the same additions. (GCC vectorizes the
-/// plain loop across neighbouring wrenches, 24 bytes each, whose 16-byte loads then straddle
-/// the last stores: a store-forwarding stall per link, measured slower than a call per link.)
-/// A template, so that a float build never instantiates the pairs.
-template <class Real>
-void addToEachWrench(Vector3* wrenches, std::size_t count, Real torque, Vector2 force) {
+/// Adds (@p torque, @p forceOf(k)) to the wrench k of the @p count wrenches from @p wrenches
+/// on. In double, each wrench's force as one SSE2 pair: the same additions. (GCC vectorizes
+/// the plain loop across neighbouring wrenches, 24 bytes each, whose 16-byte loads then
+/// straddle the last stores: a store-forwarding stall per link, measured slower than a call
+/// per link.) A template, so that a float build never instantiates the pairs.
+template <class Real, class ForceOf>
+void addToEachWrench(Vector3* wrenches, std::size_t count, Real torque, ForceOf forceOf) {
 #if defined(__SSE2__)
   if constexpr (std::is_same_v<Real, double>) {
     static_assert(std::is_standard_layout_v<Vector3> && sizeof(Vector3) == 3 * sizeof(Real),
                   "a wrench is read as its three coordinates");
-    const __m128d pair = _mm_set_pd(force.y, force.x);
     for (std::size_t k = 0; k < count; ++k) {
       auto* const w = reinterpret_cast<Real*>(&wrenches[k]);
       w[0] += torque;
-      _mm_storeu_pd(w + 1, _mm_add_pd(_mm_loadu_pd(w + 1), pair));
+      const Vector2 force = forceOf(k);
+      _mm_storeu_pd(w + 1, _mm_add_pd(_mm_loadu_pd(w + 1), _mm_set_pd(force.y, force.x)));
     }
     return;
   }
 #endif
   for (std::size_t k = 0; k < count; ++k) {
+    const Vector2 force = forceOf(k);
     wrenches[k].x += torque;
     wrenches[k].y += force.x;
     wrenches[k].z += force.y;
-  }
-}
-
-/// Adds (@p torque, @p masses[k] * @p gravity) to each of the @p count wrenches from
-/// @p wrenches on, as addToEachWrench() does (one SSE2 pair per wrench's force in double, the
-/// same multiplications and additions).
-template <class Real>
-void addWeightToEachWrench(Vector3* wrenches, const Real* masses, std::size_t count, Real torque,
-                           Vector2 gravity) {
-#if defined(__SSE2__)
-  if constexpr (std::is_same_v<Real, double>) {
-    const __m128d field = _mm_set_pd(gravity.y, gravity.x);
-    for (std::size_t k = 0; k < count; ++k) {
-      auto* const w = reinterpret_cast<Real*>(&wrenches[k]);
-      w[0] += torque;
-      const __m128d weight = _mm_mul_pd(_mm_set1_pd(masses[k]), field);
-      _mm_storeu_pd(w + 1, _mm_add_pd(_mm_loadu_pd(w + 1), weight));
-    }
-    return;
-  }
-#endif
-  for (std::size_t k = 0; k < count; ++k) {
-    wrenches[k].x += torque;
-    wrenches[k].y += masses[k] * gravity.x;
-    wrenches[k].z += masses[k] * gravity.y;
   }
 }
 
@@ -337,7 +313,7 @@ void ArticulatedAgentBase::applyForceAtEveryLinkCenterOfMass(Vector2 force) {
     refuseLinkForce(base, force, Vector2{});
   // The torque, the same for every link, as applyLinkForceAtCenterOfMass() computes it.
   addToEachWrench<real>(linkWrenches_.data() + 1, linkWrenches_.size() - 1, cross(Vector2{}, force),
-                        force);
+                        [force](std::size_t) { return force; });
 }
 
 void ArticulatedAgentBase::applyWeight(Vector2 gravity) {
@@ -345,14 +321,21 @@ void ArticulatedAgentBase::applyWeight(Vector2 gravity) {
   // zero whose sign follows the signs of m_b g's coordinates, which are g's (m_b > 0): the
   // same bits for every body, cross((0, 0), g), computed once.
   const real torque = cross(Vector2{}, gravity);
+  // The weights of the bodies from @p masses on: body k's m_k g.
+  const auto weightsOf = [gravity](const real* masses) {
+    return [masses, gravity](std::size_t k) { return masses[k] * gravity; };
+  };
   if (!fixed)  // a fixed base weighs nothing
-    addWeightToEachWrench<real>(linkWrenches_.data(), bodyMasses_.data(), 1, torque, gravity);
+    addToEachWrench<real>(linkWrenches_.data(), 1, torque, weightsOf(bodyMasses_.data()));
   const std::size_t links = linkWrenches_.size() - 1;
-  if (linksWeighAlike_)  // one weight for all (a uniform chain), without a multiplication each
-    addToEachWrench<real>(linkWrenches_.data() + 1, links, torque, bodyMasses_[1] * gravity);
-  else
-    addWeightToEachWrench<real>(linkWrenches_.data() + 1, bodyMasses_.data() + 1, links, torque,
-                                gravity);
+  if (linksWeighAlike_) {  // one weight for all (a uniform chain), without a multiplication each
+    const Vector2 weight = bodyMasses_[1] * gravity;
+    addToEachWrench<real>(linkWrenches_.data() + 1, links, torque,
+                          [weight](std::size_t) { return weight; });
+  } else {
+    addToEachWrench<real>(linkWrenches_.data() + 1, links, torque,
+                          weightsOf(bodyMasses_.data() + 1));
+  }
 }
 
 void ArticulatedAgentBase::refuseLinkForce(int b, Vector2 force, Vector2 worldPoint) const {
