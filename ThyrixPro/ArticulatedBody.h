@@ -274,6 +274,14 @@ class ArticulatedBody {
   /// Link @p i's step of the inward bias pass, given its bias @p pa and its joint torque
   /// @p tau: sets u_i and returns the bias it passes to its parent (about the parent's origin).
   Vector3 passBias(std::size_t i, const Vector3& pa, real tau);
+  /// inwardPass<true, false, false>()'s loop over a plain chain (allInChain_) with
+  /// @p wrenches (as solve() takes them, not empty), in SSE2 pairs with the same bits: leaves
+  /// the terms it carries to the base in @p inertiaCarried and @p biasCarried and returns true;
+  /// false, having done nothing, without SSE2 or for a real type other than double (a
+  /// template, so that a float build never instantiates the pairs).
+  template <class Real>
+  bool plainChainInwardPass(const Vector3* wrenches, const Real* torques,
+                            SymmetricMatrix3& inertiaCarried, Vector3& biasCarried);
   /// The inward sweep, leaves to root: the bias pass from @p externalWrenches (as solve()
   /// takes them, or empty), the joint torques @p torques (one per joint), the forces already in
   /// bias_, and the articulated inertias too when @p withInertias, with the joint damping when
