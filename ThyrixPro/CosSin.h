@@ -1,7 +1,7 @@
 #pragma once
 /// @file CosSin.h
-/// @brief The unit vector `(cos a, sin a)` of an angle, inline and without a library call, for
-/// the forward kinematics' loop over links.
+/// @brief The unit vector `(cos a, sin a)` of an angle without a library call (inline for one
+/// angle, a vectorized loop for many), for the forward kinematics' loop over links.
 
 #include <ThyrixLite/ThyrixParameters.h>
 #include <ThyrixLite/Vector2.h>
@@ -82,11 +82,11 @@ inline Vector2 cosSin(real a) {
 }
 
 /// cosSin() of every angle of @p angles into @p out (the same size), each of which
-/// cosSinKernelTakes(): one loop that vectorizes. (A caller that computes the angles in a loop
-/// of its own checks them there, for free.)
-inline void cosSinKernel(std::span<const real> angles, std::span<Vector2> out) {
-  for (std::size_t k = 0; k < angles.size(); ++k) out[k] = detail::cosSinReduced(angles[k]);
-}
+/// cosSinKernelTakes(): one loop that vectorizes, four angles at a time where the processor
+/// has AVX2 (GCC or Clang on x86-64, chosen at run time), else two (SSE2) or one: the same
+/// operations on each angle, so the same bits either way. (A caller that computes the angles
+/// in a loop of its own checks them there, for free.)
+void cosSinKernel(std::span<const real> angles, std::span<Vector2> out);
 
 /// cosSin() of every angle of @p angles into @p out (the same size): cosSinKernel(), then
 /// cosSin() again for the angles out of its range.

@@ -15,8 +15,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 namespace thyrix {
@@ -205,6 +208,34 @@ TEST(SpatialAlgebraTest, CosSinOfManyAnglesIsCosSinOfEach) {
   for (std::size_t k = 0; k < angles.size(); ++k) {
     EXPECT_EQ(out[k].x, cosSin(angles[k]).x) << k;
     EXPECT_EQ(out[k].y, cosSin(angles[k]).y) << k;
+  }
+}
+
+TEST(SpatialAlgebraTest, CosSinKernelIsCosSinOfEachAtEverySizeAndOffset) {
+  // The kernel runs four angles at a time where the processor has AVX2, two with SSE2: every
+  // count and start exercises the vector loops' leftovers; each pair must have cosSin()'s bits.
+  MTRandom random(19);
+  std::vector<real> angles;
+  for (int k = 0; k < 40; ++k) angles.push_back(draw(random, -100, 100));
+  angles[5] = real(0);
+  angles[6] = -real(0);
+  std::vector<Vector2> out(angles.size());
+  for (std::size_t start = 0; start < 4; ++start) {
+    for (std::size_t count = 0; start + count <= angles.size(); ++count) {
+      std::fill(out.begin(), out.end(), Vector2{7, 7});
+      cosSinKernel(std::span<const real>(angles).subspan(start, count),
+                   std::span<Vector2>(out).subspan(start, count));
+      for (std::size_t k = 0; k < out.size(); ++k) {
+        const bool inside = k >= start && k < start + count;
+        const Vector2 expected = inside ? cosSin(angles[k]) : Vector2{7, 7};
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(static_cast<double>(out[k].x)),
+                  std::bit_cast<std::uint64_t>(static_cast<double>(expected.x)))
+            << start << " " << count << " " << k;
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(static_cast<double>(out[k].y)),
+                  std::bit_cast<std::uint64_t>(static_cast<double>(expected.y)))
+            << start << " " << count << " " << k;
+      }
+    }
   }
 }
 
