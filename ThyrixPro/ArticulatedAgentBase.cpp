@@ -204,23 +204,19 @@ real ArticulatedAgentBase::timestep() const {
 // --- state -----------------------------------------------------------------------------------
 
 void ArticulatedAgentBase::placeShapes() {
+  for (std::size_t i = 0; i < linkShapes_.size(); ++i) {
+    const int link = static_cast<int>(i);
+    placeLinkShape(i, body_.centerOfMass(link), body_.angle(link), body_.axis(link));
+  }
+  placeBase();
+}
+
+void ArticulatedAgentBase::placeBase() {
   const real baseAngle = body_.baseAngle();
   for (std::size_t k = 0; k < baseParts_.size(); ++k) {
     Primitive& part = *baseParts_[k];
     part.r = body_.toWorld(base, partPositions_[k]);
     part.alpha = baseAngle + partAngles_[k];
-  }
-  // Each link's capsule runs from its joint to its tip: its centre is half way along the axis.
-  // The kinematics' (cos, sin) of the link's angle goes with it, so the simulator does not
-  // compute them again for the capsule's end points (Primitive::direction()).
-  // toWorld(link, (half length, 0)) is origin + rotate(axis, (half length, 0)), and the
-  // kinematics computed the centre of mass as origin + rotate(axis, centre of mass): the same
-  // bits when the two points are, without the rotation again.
-  for (std::size_t i = 0; i < linkShapes_.size(); ++i) {
-    const int link = static_cast<int>(i);
-    const Vector2 centre = capsulesCentredOnMass_ ? body_.centerOfMass(link)
-                                                  : body_.toWorld(link, {linkHalfLengths_[i], 0});
-    linkShapes_[i]->place(centre, body_.angle(link), body_.axis(link));
   }
   r = body_.basePosition();
   alpha = baseAngle;

@@ -271,8 +271,25 @@ class ArticulatedAgentBase : public MultiBodyObject {
   /// The time step of the simulator the agent is registered with (s), 0 before registration.
   [[nodiscard]] real timestep() const;
   /// Places every shape from the articulated body's forward kinematics and copies the base's
-  /// pose to `r` and `alpha`.
+  /// pose to `r` and `alpha`: placeLinkShape() of every link, then placeBase().
   void placeShapes();
+  /// Places the base's shapes and copies the base's pose to `r` and `alpha`.
+  void placeBase();
+  /// Places link @p i's capsule, whose centre of mass the kinematics put at @p centerOfMass,
+  /// its frame turned by @p angle with the axis @p axis (`(cos, sin)` of the angle): the
+  /// capsule runs from the joint to the tip, its centre half way along the axis. Inline:
+  /// ArticulatedBody::integrate() calls it for every link from within its kinematics' loop.
+  void placeLinkShape(std::size_t i, Vector2 centerOfMass, real angle, Vector2 axis) {
+    // The kinematics' (cos, sin) goes with the capsule, so the simulator does not compute them
+    // again for its end points (Primitive::direction()). toWorld(link, (half length, 0)) is
+    // origin + rotate(axis, (half length, 0)), and the kinematics computed the centre of mass as
+    // origin + rotate(axis, centre of mass): the same bits when the two points are, without the
+    // rotation again.
+    const Vector2 centre = capsulesCentredOnMass_
+                               ? centerOfMass
+                               : body_.toWorld(static_cast<int>(i), {linkHalfLengths_[i], 0});
+    linkShapes_[i]->place(centre, angle, axis);
+  }
   /// `i` as an index, for the per-joint arrays.
   [[nodiscard]] static std::size_t index(int i) { return static_cast<std::size_t>(i); }
   /// Throws InvalidArgument naming "ArticulatedAgentBase.joint" unless @p i is a joint.

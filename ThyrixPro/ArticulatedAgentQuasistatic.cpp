@@ -168,8 +168,12 @@ void ArticulatedAgentQuasistatic::integrate(real dt) {
     }
     servoTorquesSet_ = servoCount_ > 0;
   }
-  body_.integrate(velocities_, dt);  // a fixed base stays put
-  placeShapes();
+  // A fixed base stays put. The links' shapes are placed as the kinematics reach them.
+  body_.integrate(velocities_, dt,
+                  [this](std::size_t i, Vector2 centerOfMass, real angle, Vector2 axis) {
+                    placeLinkShape(i, centerOfMass, angle, axis);
+                  });
+  placeBase();
 }
 
 }  // namespace thyrix

@@ -7,6 +7,7 @@
 #include <climits>
 #include <cmath>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 // The quasistatic articulated-body algorithm (Featherstone 2008, chapter 7; ALGORITHMS.md
@@ -26,11 +27,6 @@
 namespace thyrix {
 
 namespace {
-
-/// @p v turned by the angle whose (cos, sin) is @p axis.
-constexpr Vector2 rotate(Vector2 axis, Vector2 v) {
-  return {axis.x * v.x - axis.y * v.y, axis.y * v.x + axis.x * v.y};
-}
 
 std::string sizeProblem(std::size_t expected, std::size_t got) {
   return "must have " + std::to_string(expected) + " entries or none (got " + std::to_string(got) +
@@ -149,6 +145,10 @@ void ArticulatedBody::setJointAngles(std::span<const real> q) {
 }
 
 void ArticulatedBody::integrate(const Output& out, real dt) {
+  integrate(out, dt, [](std::size_t, Vector2, real, Vector2) {});
+}
+
+void ArticulatedBody::moveBase(const Output& out, real dt) {
   if (out.velocities.size() != origin_.size() || out.jointRates.size() != q_.size())
     throw InvalidArgument("ArticulatedBody.Output",
                           "must be sized for " + std::to_string(linkCount()) + " links");
@@ -156,8 +156,6 @@ void ArticulatedBody::integrate(const Output& out, real dt) {
     basePosition_ += out.linearVelocity(base) * dt;
     baseAngle_ += out.angularVelocity(base) * dt;
   }
-  for (std::size_t i = 0; i < q_.size(); ++i) q_[i] += out.jointRates[i] * dt;
-  forwardKinematics();
 }
 
 // --- kinematics ------------------------------------------------------------------------------
@@ -170,23 +168,46 @@ void ArticulatedBody::forwardKinematics() {
   // parent's angle, origin and axis are carried in registers when it is the body just visited
   // (slot i, the usual case within a limb), as in the articulated-body passes: each link waits
   // for its parent's, and a round trip through memory would lengthen the chain.
+  anglesAndAxes(nullptr, 0);
+  if (allInChain_) {
+    chainOrigins([](std::size_t, Vector2, real, Vector2) {});
+  } else {
+    treeOrigins();
+  }
+}
+
+void ArticulatedBody::anglesAndAxes(const real* rates, real dt) {
   angle_[0] = baseAngle_;
   real parentAngle = baseAngle_;
   bool kernelTakesAll = cosSinKernelTakes(baseAngle_);
-  // (A plain chain, allInChain_, has every parent at slot i: no slot to test.)
-  for (std::size_t i = 0; i < links_.size(); ++i) {
-    if (!allInChain_) {
-      const std::size_t p = parentSlot_[i];
-      if (p != i) parentAngle = angle_[p];
+  // In two copies, with and without integrate()'s move of the joints (q_i += qdot_i dt, in
+  // the same pass).
+  const auto sweep = [&](auto moving) {
+    // (A plain chain, allInChain_, has every parent at slot i: no slot to test.)
+    for (std::size_t i = 0; i < links_.size(); ++i) {
+      if (!allInChain_) {
+        const std::size_t p = parentSlot_[i];
+        if (p != i) parentAngle = angle_[p];
+      }
+      if constexpr (decltype(moving)::value) q_[i] += rates[i] * dt;
+      parentAngle += q_[i];
+      angle_[i + 1] = parentAngle;
+      kernelTakesAll &= cosSinKernelTakes(parentAngle);
     }
-    parentAngle += q_[i];
-    angle_[i + 1] = parentAngle;
-    kernelTakesAll &= cosSinKernelTakes(parentAngle);
-  }
+  };
+  if (rates != nullptr)
+    sweep(std::true_type{});
+  else
+    sweep(std::false_type{});
   if (kernelTakesAll)
     cosSinKernel(angle_, axis_);
   else
     cosSin(angle_, axis_);
+  // Everything that depends on the configuration is now out of date.
+  inertiasStale_ = true;
+}
+
+void ArticulatedBody::treeOrigins() {
   origin_[0] = basePosition_;
   comOffset_[0] = {};
   Vector2 parentOrigin = origin_[0];
@@ -194,22 +215,18 @@ void ArticulatedBody::forwardKinematics() {
   for (std::size_t i = 0; i < links_.size(); ++i) {
     const ArticulatedLink& l = links_[i];
     const std::size_t self = i + 1;
-    if (!allInChain_) {
-      const std::size_t p = parentSlot_[i];
-      if (p != i) {
-        parentOrigin = origin_[p];
-        parentAxis = axis_[p];
-      }
+    const std::size_t p = parentSlot_[i];
+    if (p != i) {
+      parentOrigin = origin_[p];
+      parentAxis = axis_[p];
     }
-    const Vector2 shift = rotate(parentAxis, l.jointPosition);
+    const Vector2 shift = rotated(parentAxis, l.jointPosition);
     shift_[i] = shift;
     parentOrigin += shift;
     origin_[self] = parentOrigin;
     parentAxis = axis_[self];
-    comOffset_[self] = rotate(parentAxis, l.centerOfMass);
+    comOffset_[self] = rotated(parentAxis, l.centerOfMass);
   }
-  // Everything that depends on the configuration is now out of date.
-  inertiasStale_ = true;
 }
 
 // --- solve and respond -----------------------------------------------------------------------

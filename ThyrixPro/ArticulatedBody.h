@@ -190,6 +190,25 @@ class ArticulatedBody {
   /// @throws InvalidArgument naming "ArticulatedBody.Output" when @p out is not sized for this
   /// body
   void integrate(const Output& out, real dt);
+  /// integrate(@p out, @p dt), calling `eachLink(i, centerOfMass(i), angle(i), axis(i))` for
+  /// every link i, in index order, as soon as link i's pose is known (the accessors below give
+  /// it then too). For a plain chain (every link's parent the link before it) the calls come
+  /// from within the kinematics' last loop over the links, with the pose at hand, so that a
+  /// caller placing a shape on every link does so without a loop of its own.
+  template <class EachLink>
+  void integrate(const Output& out, real dt, EachLink&& eachLink) {
+    moveBase(out, dt);
+    anglesAndAxes(out.jointRates.data(), dt);
+    if (allInChain_) {
+      chainOrigins(eachLink);
+    } else {
+      treeOrigins();
+      for (std::size_t i = 0; i < links_.size(); ++i) {
+        const int link = static_cast<int>(i);
+        eachLink(i, centerOfMass(link), angle(link), axis(link));
+      }
+    }
+  }
 
   // --- kinematics ----------------------------------------------------------------------------
 
@@ -265,6 +284,37 @@ class ArticulatedBody {
   }
 
  private:
+  /// integrate()'s check of @p out and move of the base.
+  void moveBase(const Output& out, real dt);
+  /// The first two sweeps of forwardKinematics(): every body's angle, then its axis; with
+  /// @p rates (not null) integrate()'s move of the joints too, `q_i += rates[i] dt`.
+  void anglesAndAxes(const real* rates, real dt);
+  /// The last sweep of forwardKinematics() (the origins and centre-of-mass offsets) for any tree.
+  void treeOrigins();
+  /// treeOrigins() for a plain chain (allInChain_: every parent at slot i, carried in
+  /// registers), calling @p eachLink as integrate() says once link i's pose is stored.
+  template <class EachLink>
+  void chainOrigins(EachLink&& eachLink) {
+    origin_[0] = basePosition_;
+    comOffset_[0] = {};
+    Vector2 parentOrigin = basePosition_;
+    Vector2 parentAxis = axis_[0];
+    for (std::size_t i = 0; i < links_.size(); ++i) {
+      const ArticulatedLink& l = links_[i];
+      const Vector2 shift = rotated(parentAxis, l.jointPosition);
+      shift_[i] = shift;
+      parentOrigin += shift;
+      origin_[i + 1] = parentOrigin;
+      parentAxis = axis_[i + 1];
+      const Vector2 offset = rotated(parentAxis, l.centerOfMass);
+      comOffset_[i + 1] = offset;
+      eachLink(i, parentOrigin + offset, angle_[i + 1], parentAxis);
+    }
+  }
+  /// @p v turned by the angle whose (cos, sin) is @p axis.
+  static constexpr Vector2 rotated(Vector2 axis, Vector2 v) {
+    return {axis.x * v.x - axis.y * v.y, axis.y * v.x + axis.x * v.y};
+  }
   void checkTestForce(const TestForce& force) const;
   void depositTestForce(const TestForce& force, real magnitude);
   /// Link @p i's step of the inward inertia pass, given its articulated inertia @p da: sets

@@ -863,6 +863,40 @@ TEST(ArticulatedBodyTest, IntegrateMovesTheStateByTheVelocities) {
   EXPECT_EQ(a.jointRates, b.jointRates);
 }
 
+TEST(ArticulatedBodyTest, IntegrateCallsEachLinkWithItsPoseInOrder) {
+  // A chain (the calls come from within the kinematics' loop) and a tree (after it): each
+  // link once, in index order, with the pose the accessors give, the same state as integrate()
+  // without the calls, and link i's pose already there when it is called.
+  for (const Shape shape : {Shape::Chain, Shape::Tree}) {
+    const Problem p = randomProblem(12, shape, 31);
+    ArticulatedBody body = p.build();
+    ArticulatedBody plain = p.build();
+    ArticulatedBody::Output out = body.makeOutput();
+    body.solve(p.torques, p.wrenches, out);
+    const real dt = real(0.01);
+    std::vector<int> seen;
+    body.integrate(out, dt, [&](std::size_t i, Vector2 centre, real angle, Vector2 axis) {
+      const int link = static_cast<int>(i);
+      seen.push_back(link);
+      EXPECT_EQ(centre, body.centerOfMass(link)) << link;
+      EXPECT_EQ(angle, body.angle(link)) << link;
+      EXPECT_EQ(axis, body.axis(link)) << link;
+    });
+    plain.integrate(out, dt);
+    std::vector<int> expected(12);
+    for (int i = 0; i < 12; ++i) expected[static_cast<std::size_t>(i)] = i;
+    EXPECT_EQ(seen, expected);
+    EXPECT_EQ(body.basePosition(), plain.basePosition());
+    EXPECT_EQ(body.baseAngle(), plain.baseAngle());
+    for (int b = ArticulatedBody::base; b < 12; ++b) {
+      EXPECT_EQ(body.origin(b), plain.origin(b)) << b;
+      EXPECT_EQ(body.angle(b), plain.angle(b)) << b;
+      EXPECT_EQ(body.axis(b), plain.axis(b)) << b;
+      EXPECT_EQ(body.centerOfMass(b), plain.centerOfMass(b)) << b;
+    }
+  }
+}
+
 TEST(ArticulatedBodyTest, SameInputGivesBitIdenticalOutput) {
   const Problem p = randomProblem(50, Shape::Tree, 2024);
   ArticulatedBody first = p.build();
