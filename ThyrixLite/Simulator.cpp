@@ -83,6 +83,8 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
   reserveFor(gridMovedBits_, words);
   reserveFor(borderReach_, borders * words);
   reserveFor(previousStart_, shapes_.size() + shapes + 2);
+  reserveFor(pairChains_, shapes_.size() + shapes);
+  reserveFor(previousChains_, shapes_.size() + shapes);
 }
 
 void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) noexcept {
@@ -128,7 +130,8 @@ void Simulator::reserveContacts(std::size_t count) {
   previousContacts_.reserve(count);  // the two swap at each step
   previousOrder_.reserve(count);
   previousSortedKeys_.reserve(count);
-  previousListKeys_.reserve(count);
+  if (contactPairs_.size() < count) contactPairs_.resize(count);  // (sized ahead: see there)
+  if (previousPairs_.size() < count) previousPairs_.resize(count);
   objectContacts_.reserve(2 * count);
   pairs_.reserve(count);
   rows_.reserve(count);
@@ -184,7 +187,12 @@ void Simulator::eraseContacts() {
   previousValid_ = contactsComplete_;
   previousSolved_ = contactsComplete_ && contactsSolved_;
   contactsSolved_ = false;
-  if (contactsComplete_) std::swap(contacts.items_, previousContacts_);
+  if (contactsComplete_) {
+    std::swap(contacts.items_, previousContacts_);
+    std::swap(contactPairs_, previousPairs_);  // (what finds them by pair goes with them)
+    std::swap(pairChains_, previousChains_);
+    previousListStamp_ = listStamp_;
+  }
   contacts.items_.clear();
   contactsComplete_ = false;
   clearContactLists();

@@ -259,14 +259,54 @@ class Simulator : public World {
   void addCirclePairs(std::span<const CirclePair> pairs);
   /// Appends a contact of shapes @p shapeA and @p shapeB per point of @p manifold.
   void appendContacts(std::uint32_t shapeA, std::uint32_t shapeB, const Manifold& manifold);
-  /// Appends the contact of shapes @p shapeA and @p shapeB at @p point along @p normal.
+  /// Appends the contact of shapes @p shapeA and @p shapeB at @p point along @p normal (the
+  /// caller notes it: noteContactPair()).
   void appendContact(std::uint32_t shapeA, std::uint32_t shapeB, const ManifoldPoint& point,
                      Vector2 normal);
   void reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   void indexPreviousContacts();
+  // Each contact's pair as detection appended it, and the pairs of each shape A chained in
+  // list order, noted as contacts are appended (noteContactPair()): the next step finds a
+  // pair's contacts from them without sorting the list. Kept for `contacts` and, swapped
+  // with it, for previousContacts_.
+  struct ContactPair {
+    std::uint64_t key;      // pairKey()
+    std::uint32_t nextOfA;  // first contact of the next pair with the same shape A, or noPair
+  };
+  static constexpr std::uint32_t noPair = ~0u;
+  /// A pair of shapes as one number, ordered by shape A, then shape B.
+  static std::uint64_t pairKey(std::uint32_t shapeA, std::uint32_t shapeB) {
+    return std::uint64_t{shapeA} << 32 | shapeB;
+  }
+  struct PairChain {          // one shape's pairs as shape A in one list
+    std::uint32_t first = 0;  // first contact of its first pair
+    std::uint32_t last = 0;   // first contact of its last pair
+    // Its pair count, and in the top two bits, once looked at (sortedRun()): 1 when its
+    // contacts are consecutive in the list, by increasing shape B (a border's: its pairs are
+    // visited in the shapes' order), 2 when not.
+    std::uint32_t pairsAndRun = 0;
+    std::uint32_t stamp = 0;  // the list's stamp when valid
+  };
+  /// Notes, for the next step's lookups by pair (SimulatorPreviousContacts.cpp), the contact at
+  /// @p position in `contacts`, of shapes @p shapeA and @p shapeB (@p first: its pair's first
+  /// point), in @p notes (from notesFor()).
+  void noteContactPair(ContactPair* notes, std::uint32_t position, std::uint32_t shapeA,
+                       std::uint32_t shapeB, bool first);
+  /// The notes of `contacts`, with room for @p count contacts.
+  ContactPair* notesFor(std::size_t count);
+  /// Positions [begin, end) in previousContacts_: a pair's contacts, consecutive in a list.
+  struct PreviousRange {
+    std::uint32_t begin;
+    std::uint32_t end;
+  };
   /// Where in previousContacts_ the last step's contacts between @p shapeA and @p shapeB
-  /// are, in their order of detection.
-  std::span<const std::uint32_t> previousContactsOf(std::uint32_t shapeA, std::uint32_t shapeB);
+  /// are (in their order of detection).
+  PreviousRange previousContactsOf(std::uint32_t shapeA, std::uint32_t shapeB);
+  /// Whether @p chain, shape @p shapeA's in previousContacts_, is a sorted run (PairChain);
+  /// the answer is kept in the chain.
+  bool sortedRun(PairChain& chain, std::uint32_t shapeA);
+  /// Advances listStamp_ for a new detection.
+  void nextListStamp();
   /// The force the last step's contact with @p contact's identity (shapes and feature) ended
   /// with, or 0, when it is not at the warm start's first guess (solveIsland(): the contact
   /// after the last found). Looks at @p position, @p contact's own place in `contacts`, then
@@ -325,12 +365,21 @@ class Simulator : public World {
   void updateNeverPaired();
   void markNeverPaired(std::uint32_t body);
   std::vector<GlobalContactInfo> previousContacts_;  // the last detection's contacts
-  std::vector<std::uint32_t> previousStart_;         // counting sort by shape A: offsets
-  std::vector<std::uint32_t> previousOrder_;         // by shape A (then B if many): positions
-  std::vector<std::uint64_t> previousSortedKeys_;    // each previousOrder_ entry's shapes, A then B
-  std::vector<std::uint64_t> previousListKeys_;  // indexPreviousContacts: the pairs in list order
-  std::size_t previousCursor_ = 0;               // previousOrder_ after the last pair found
-  std::size_t previousHint_ = 0;                 // the warm start's next guess
+  // The pairs noted for `contacts` and, swapped with it, for previousContacts_ (as many as
+  // the list's contacts are valid: the buffers only grow).
+  std::vector<ContactPair> contactPairs_;
+  std::vector<ContactPair> previousPairs_;
+  std::vector<PairChain> pairChains_;
+  std::vector<PairChain> previousChains_;
+  std::uint32_t listStamp_ = 0;          // of the detection appending to `contacts`
+  std::uint32_t previousListStamp_ = 0;  // of previousContacts_'s detection
+  // A shape with many pairs whose contacts are not one sorted run (PairChain) is looked up in
+  // an index built when first needed: a counting sort by shape A, then B for large groups.
+  std::vector<std::uint32_t> previousStart_;       // counting sort by shape A: offsets
+  std::vector<std::uint32_t> previousOrder_;       // by shape A (then B if many): positions
+  std::vector<std::uint64_t> previousSortedKeys_;  // each previousOrder_ entry's shapes, A then B
+  std::size_t previousCursor_ = 0;                 // previousContacts_ after the last pair found
+  std::size_t previousHint_ = 0;                   // the warm start's next guess
   real geometryFraction_ = 0;      // speculativeFraction the cached margins were computed with
   real geometryTravel_ = 0;        // speculativeTravel the cached travels were computed with
   bool contactsComplete_ = false;  // `contacts` holds exactly one detection's contacts

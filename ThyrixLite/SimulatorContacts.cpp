@@ -92,7 +92,13 @@ void Simulator::detectContacts() {
   // (Only pairs of unmoved shapes are reused: none when every shape moved.)
   const bool reuse = restSkipping && previousValid_ && fromEmpty;
   previousIndexed_ = false;  // indexed at most once a detection, for the shapes of now
-  contactsSolved_ = false;   // these contacts, until the solver gives them forces
+  previousCursor_ = 0;
+  if (pairChains_.size() != shapes_.size()) {  // new shapes: no pair in either list yet
+    pairChains_.resize(shapes_.size());
+    previousChains_.resize(shapes_.size());
+  }
+  nextListStamp();
+  contactsSolved_ = false;  // these contacts, until the solver gives them forces
   statistics_.reusedContacts = 0;
   // (Without new objects or objects with rules, there is nothing to look at.)
   if (neverPaired_.objects != bodyStates_.size() || !neverPaired_.rules.empty())
@@ -325,6 +331,31 @@ bool Simulator::findBorderReachTogether(std::size_t words) {
   return true;
 }
 
+// Inline: before each batch of contacts appended.
+inline Simulator::ContactPair* Simulator::notesFor(std::size_t count) {
+  if (count > contactPairs_.size())  // rare: the buffer doubles
+    contactPairs_.resize(std::max({count, 2 * contactPairs_.size(), std::size_t{64}}));
+  return contactPairs_.data();
+}
+
+// Inline: every contact appended is noted (SimulatorPreviousContacts.cpp reads the notes).
+inline void Simulator::noteContactPair(ContactPair* notes, std::uint32_t position,
+                                       std::uint32_t shapeA, std::uint32_t shapeB, bool first) {
+  // A detection visits each pair once and appends its points one after another: the first
+  // point's pair is chained to shape A's last one, or begins its chain.
+  notes[position] = {pairKey(shapeA, shapeB), noPair};
+  if (!first) return;
+  // Written as selects (whether a circle's pair is its first as shape A is random): a shape's
+  // first pair writes its own link (noPair, as it is).
+  PairChain& chain = pairChains_[shapeA];
+  const bool chained = chain.stamp == listStamp_;
+  notes[chained ? chain.last : position].nextOfA = chained ? position : noPair;
+  chain.first = chained ? chain.first : position;
+  chain.last = position;
+  chain.pairsAndRun = chained ? chain.pairsAndRun + 1 : 1;
+  chain.stamp = listStamp_;
+}
+
 void Simulator::reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
   // Neither shape moved and its filters did not change: the contacts are last detection's.
   // (Pairs within one multi-body object are always tested: whether they collide is its call.)
@@ -333,9 +364,13 @@ void Simulator::reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
     addContacts(shapeA, shapeB);
     return;
   }
-  for (const std::uint32_t k : previousContactsOf(shapeA, shapeB)) {
+  const PreviousRange range = previousContactsOf(shapeA, shapeB);
+  auto position = static_cast<std::uint32_t>(contacts.items_.size());
+  ContactPair* const notes = notesFor(position + std::size_t{range.end - range.begin});
+  for (std::uint32_t k = range.begin; k < range.end; ++k) {
     contacts.items_.push_back(previousContacts_[k]);
     contacts.items_.back().force = 0;  // the solver's output, not detection's
+    noteContactPair(notes, position++, shapeA, shapeB, k == range.begin);
     ++statistics_.reusedContacts;
   }
 }
@@ -352,8 +387,13 @@ inline void Simulator::appendContact(std::uint32_t shapeA, std::uint32_t shapeB,
 // Inline: the narrow phase calls it for every pair in reach.
 inline void Simulator::appendContacts(std::uint32_t shapeA, std::uint32_t shapeB,
                                       const Manifold& manifold) {
-  for (int i = 0; i < manifold.count; ++i)
+  const auto position = static_cast<std::uint32_t>(contacts.items_.size());
+  const auto count = static_cast<std::uint32_t>(manifold.count);
+  ContactPair* const notes = notesFor(std::size_t{position} + count);
+  for (std::uint32_t i = 0; i < count; ++i) {
     appendContact(shapeA, shapeB, manifold.points[i], manifold.normal);
+    noteContactPair(notes, position + i, shapeA, shapeB, i == 0);
+  }
 }
 
 // Inline: the detection loop calls it for every pair of two circles.
@@ -378,6 +418,8 @@ inline bool Simulator::circlesInReach(std::uint32_t shapeA, std::uint32_t shapeB
 void Simulator::addCirclePairs(std::span<const CirclePair> pairs) {
   // collideCircles' one point, stored without a Manifold in between (zeroed, then read back
   // in a loop over its points).
+  auto position = static_cast<std::uint32_t>(contacts.items_.size());
+  ContactPair* const notes = notesFor(position + pairs.size());
   for (const CirclePair& pair : pairs) {
     Vector2 normal;
     ManifoldPoint p;
@@ -386,6 +428,7 @@ void Simulator::addCirclePairs(std::span<const CirclePair> pairs) {
                                     normal, p))
       continue;
     appendContact(pair.shapeA, pair.shapeB, p, normal);
+    noteContactPair(notes, position++, pair.shapeA, pair.shapeB, true);
   }
 }
 

@@ -9,44 +9,40 @@ namespace thyrix {
 
 namespace {
 
-/// A shape A with up to this many of the last step's contacts has its pairs found by a scan;
-/// above, they are sorted by shape B and found by a binary search.
+/// A shape A with up to this many of the last step's contacts in the index has its pairs
+/// found by a scan; above, they are sorted by shape B and found by a binary search.
 constexpr std::size_t scannedGroup = 8;
 
-/// A pair of shapes as one number, ordered by shape A, then shape B.
-std::uint64_t pairKey(std::uint32_t shapeA, std::uint32_t shapeB) {
-  return std::uint64_t{shapeA} << 32 | shapeB;
-}
+/// A shape A with up to this many pairs in the last step's list has them found by a walk of
+/// its chain; above (a floor under a crowd), by a binary search: of the list where its
+/// contacts are consecutive and in order, else of the index.
+constexpr std::uint32_t chainedPairs = 16;
+
+/// PairChain::pairsAndRun's pair count.
+constexpr std::uint32_t pairCountMask = (1u << 30) - 1;
 
 }  // namespace
 
 void Simulator::indexPreviousContacts() {
-  // A counting sort by shape A (stable: a pair's points stay together, in order). Within a
-  // shape A, a pair is found by a scan; only a shape A with many contacts (a floor under a
-  // crowd), whose search would otherwise be a long scan, is also sorted by shape B, for a
-  // binary search. (A circle's few pairs come in no order: sorting them all cost a
-  // mispredicted branch per contact, a third of the function.)
-  // The contacts are read once, their pairs copied to previousListKeys_ for the second pass (a
-  // contact is as long as a cache line and more: a second pass over them cost as much again).
+  // A counting sort by shape A (stable: a pair's points stay together, in order), then by
+  // shape B within each shape A with more than scannedGroup contacts. Built only when a shape
+  // with more than chainedPairs pairs is looked up (others walk their chains), from the pairs
+  // noted at detection (not from the contacts: a contact is as long as a cache line and more).
   // Counts are kept one entry late, so that the fill's cursors are previousStart_ itself:
   // shape A's group is then previousStart_[A] to previousStart_[A + 1].
   const std::size_t count = previousContacts_.size();
   const std::size_t shapes = shapes_.size();
   previousStart_.assign(shapes + 2, 0);
-  previousListKeys_.resize(count);
   std::uint32_t* const start = previousStart_.data();
-  for (std::size_t k = 0; k < count; ++k) {
-    const GlobalContactInfo& c = previousContacts_[k];
-    ++start[c.shapeA + 2];
-    previousListKeys_[k] = pairKey(c.shapeA, c.shapeB);
-  }
+  const ContactPair* const list = previousPairs_.data();
+  for (std::size_t k = 0; k < count; ++k) ++start[(list[k].key >> 32) + 2];
   for (std::size_t s = 0; s < shapes; ++s) start[s + 2] += start[s + 1];
   previousOrder_.resize(count);
   previousSortedKeys_.resize(count);
   std::uint64_t* const pairs = previousSortedKeys_.data();
   std::uint32_t* const order = previousOrder_.data();
   for (std::uint32_t k = 0; k < count; ++k) {
-    const std::uint64_t key = previousListKeys_[k];
+    const std::uint64_t key = list[k].key;
     const std::uint32_t i = start[(key >> 32) + 1]++;
     order[i] = k;
     pairs[i] = key;
@@ -74,34 +70,75 @@ void Simulator::indexPreviousContacts() {
       pairs[j] = pair;
     }
   }
-  previousCursor_ = 0;
   previousIndexed_ = true;
 }
 
-std::span<const std::uint32_t> Simulator::previousContactsOf(std::uint32_t shapeA,
-                                                             std::uint32_t shapeB) {
-  if (!previousIndexed_) indexPreviousContacts();
-  const std::uint64_t pair = pairKey(shapeA, shapeB);
-  const std::uint64_t* const pairs = previousSortedKeys_.data();
-  const std::size_t count = previousSortedKeys_.size();
-  // Pairs come in nearly the last step's order (a border's with the shapes in order): the
-  // pair's contacts usually begin where the last pair's ended (a pair's entries are
-  // consecutive). Else a scan of shape A's group, or a binary search of a large one.
+void Simulator::nextListStamp() {
+  // A new stamp for the pairs this detection notes: a list's chains are those of its stamp.
+  if (++listStamp_ != 0) return;
+  // Wrapped around (after 2^32 detections): the chains of the last list are given stamp 1,
+  // every other chain 0, and this detection 2, so no old chain can pass for a current one.
+  for (PairChain& chain : pairChains_) chain.stamp = 0;
+  for (PairChain& chain : previousChains_)
+    chain.stamp = chain.stamp == previousListStamp_ && previousListStamp_ != 0 ? 1 : 0;
+  previousListStamp_ = previousListStamp_ != 0 ? 1 : 0;
+  listStamp_ = 2;
+}
+
+bool Simulator::sortedRun(PairChain& chain, std::uint32_t shapeA) {
+  // Looked at once a step (the answer is kept in the chain): from the chain's first contact to
+  // its last pair's, every contact is shape A's, and the pairs only increase.
+  constexpr std::uint32_t runShift = 30;
+  if (chain.pairsAndRun >> runShift == 0) {
+    const ContactPair* const list = previousPairs_.data();
+    bool sorted = true;
+    for (std::uint32_t k = chain.first; k < chain.last && sorted; ++k)
+      sorted = list[k].key <= list[k + 1].key && list[k + 1].key >> 32 == shapeA;
+    chain.pairsAndRun |= (sorted ? 1u : 2u) << runShift;
+  }
+  return chain.pairsAndRun >> runShift == 1;
+}
+
+Simulator::PreviousRange Simulator::previousContactsOf(std::uint32_t shapeA, std::uint32_t shapeB) {
+  const std::uint64_t key = pairKey(shapeA, shapeB);
+  const ContactPair* const list = previousPairs_.data();
+  const std::size_t count = previousContacts_.size();
+  // Pairs come in nearly the last step's order: the pair's contacts usually begin where the
+  // last pair's ended (a pair's contacts are consecutive). Else a walk of shape A's chain,
+  // or a binary search for a shape with many pairs.
   std::size_t first = previousCursor_;
-  if (!(first < count && pairs[first] == pair && (first == 0 || pairs[first - 1] != pair))) {
-    const std::size_t begin = previousStart_[shapeA];
-    const std::size_t end = previousStart_[shapeA + 1];
-    if (end - begin > scannedGroup) {
-      first = static_cast<std::size_t>(std::lower_bound(pairs + begin, pairs + end, pair) - pairs);
+  if (!(first < count && list[first].key == key && (first == 0 || list[first - 1].key != key))) {
+    first = count;  // none, unless found
+    PairChain& chain = previousChains_[shapeA];
+    if (chain.stamp != previousListStamp_) {
+      // shape A is no shape A of the last step's list
+    } else if ((chain.pairsAndRun & pairCountMask) <= chainedPairs) {
+      for (std::uint32_t k = chain.first; k != noPair; k = list[k].nextOfA) {
+        if (list[k].key == key) {
+          first = k;
+          break;
+        }
+      }
+    } else if (sortedRun(chain, shapeA)) {
+      const auto byKey = [](const ContactPair& pair, std::uint64_t value) {
+        return pair.key < value;
+      };
+      const ContactPair* const end = list + chain.last + 1;
+      const ContactPair* const found = std::lower_bound(list + chain.first, end, key, byKey);
+      if (found != end && found->key == key) first = static_cast<std::size_t>(found - list);
     } else {
-      first = begin;
-      while (first < end && pairs[first] != pair) ++first;
+      if (!previousIndexed_) indexPreviousContacts();
+      const std::uint64_t* const pairs = previousSortedKeys_.data();
+      const std::uint64_t* const end = pairs + previousStart_[shapeA + 1];
+      const std::uint64_t* const found = std::lower_bound(pairs + previousStart_[shapeA], end, key);
+      if (found != end && *found == key) first = previousOrder_[found - pairs];
     }
   }
   std::size_t last = first;
-  while (last < count && pairs[last] == pair) ++last;
-  previousCursor_ = last;
-  return std::span(previousOrder_).subspan(first, last - first);
+  while (last < count && list[last].key == key) ++last;
+  // (A pair in reach without contacts leaves the cursor where the next pair's may begin.)
+  if (last != first) previousCursor_ = last;
+  return {static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last)};
 }
 
 real Simulator::searchPreviousForce(const GlobalContactInfo& contact, std::size_t position,
@@ -112,7 +149,8 @@ real Simulator::searchPreviousForce(const GlobalContactInfo& contact, std::size_
     hint = position + 1;
     return previousContacts_[position].force;
   }
-  for (const std::uint32_t k : previousContactsOf(contact.shapeA, contact.shapeB)) {
+  const PreviousRange range = previousContactsOf(contact.shapeA, contact.shapeB);
+  for (std::uint32_t k = range.begin; k < range.end; ++k) {
     if (previousContacts_[k].feature == contact.feature) {
       hint = std::size_t{k} + 1;
       return previousContacts_[k].force;

@@ -266,5 +266,69 @@ TEST(RestSkipping, ABodyMovedByHandIsNoticed) {
   EXPECT_LT(capsule.boxMin.y, real(0.1)) << "the box follows the new angle";
 }
 
+/// Hubs: big circles, registered after a ring of capsules around each, so that each hub is
+/// shape A of many pairs (more than a short walk finds), with a floor under a row of circles.
+/// Pokes move a few shapes, so the last step's contacts are looked up out of their order.
+void runHubs(int hubs, bool gaussSeidel) {
+  std::vector<std::unique_ptr<Simulator>> worlds;
+  std::vector<std::vector<PhysicalObject*>> bodies(2);
+  for (int w = 0; w < 2; ++w) {
+    auto& simulator = *worlds.emplace_back(std::make_unique<Simulator>(real(1) / 60));
+    simulator.restSkipping = w == 0;
+    if (gaussSeidel) simulator.setContactSolver(ContactSolverKind::GaussSeidel);
+    simulator.registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
+    for (int i = 0; i < 24; ++i) {  // resting on the floor: a border's many pairs
+      auto& circle = simulator.registerObject(std::make_unique<Circle>(real(0.2), real(1)));
+      circle.r = {real(0.5) * static_cast<real>(i), real(0.19)};
+      bodies[w].push_back(&circle);
+    }
+    constexpr int ring = 45;  // the capsules overlap their neighbours near the hub
+    for (int h = 0; h < hubs; ++h) {
+      for (int k = 0; k < ring; ++k) {
+        const double angle = 2 * 3.14159265358979 * k / ring;
+        auto& capsule = simulator.registerObject(
+            std::make_unique<CappedRectangle>(real(0.3), real(0.15), real(1)));
+        capsule.r = {static_cast<real>(5 + 7 * h + 2.42 * std::cos(angle)),
+                     static_cast<real>(5 + 2.42 * std::sin(angle))};
+        capsule.alpha = static_cast<real>(angle);
+        bodies[w].push_back(&capsule);
+      }
+    }
+    for (int h = 0; h < hubs; ++h) {
+      auto& hub = simulator.registerObject(std::make_unique<Circle>(real(2), real(1)));
+      hub.r = {static_cast<real>(5 + 7 * h), 5};
+      bodies[w].push_back(&hub);
+    }
+  }
+  MTRandom random(7);
+  std::size_t reused = 0;
+  for (int step = 0; step < 400; ++step) {
+    const bool poking = step % 40 < 5;
+    const auto poked = random.integer(static_cast<std::uint32_t>(bodies[0].size()));
+    const Vector2 push{static_cast<real>(random.uniform(-3, 3)),
+                       static_cast<real>(random.uniform(-3, 3))};
+    for (int w = 0; w < 2; ++w) {
+      if (poking) bodies[w][poked]->externalForce += push;
+      if (step % 100 < 3) bodies[w].back()->externalForce += Vector2{real(0.3), real(0.1)};
+      worlds[w]->advanceTime();
+    }
+    expectSameContacts(*worlds[0], *worlds[1], step);
+    if (::testing::Test::HasFatalFailure()) return;
+    reused += worlds[0]->statistics().reusedContacts;
+  }
+  EXPECT_EQ(scenes::stateHash(*worlds[0]), scenes::stateHash(*worlds[1]));
+  EXPECT_GT(reused, 1000u);
+}
+
+// One hub among few boxes (tested pair by pair): its pairs come between its capsules' own, so
+// its contacts are not together in the list. Several hubs in the grid: each hub's pairs are
+// listed together (it is oversized).
+TEST(RestSkipping, AShapeOfManyPairsKeepsItsContacts) {
+  for (const bool gaussSeidel : {false, true}) {
+    runHubs(1, gaussSeidel);
+    runHubs(4, gaussSeidel);
+  }
+}
+
 }  // namespace
 }  // namespace thyrix
