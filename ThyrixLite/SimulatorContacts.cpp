@@ -345,14 +345,15 @@ inline void Simulator::noteContactPair(ContactPair* notes, std::uint32_t positio
   // point's pair is chained to shape A's last one, or begins its chain.
   notes[position] = {pairKey(shapeA, shapeB), noPair};
   if (!first) return;
-  // Written as selects (whether a circle's pair is its first as shape A is random): a shape's
-  // first pair writes its own link (noPair, as it is).
+  // Without a branch (whether a circle's pair is its first as shape A is random; GCC made
+  // the selects a branch): a mask of ones when the chain goes on. A shape's first pair writes
+  // its own link (noPair, as it is).
   PairChain& chain = pairChains_[shapeA];
-  const bool chained = chain.stamp == listStamp_;
-  notes[chained ? chain.last : position].nextOfA = chained ? position : noPair;
-  chain.first = chained ? chain.first : position;
+  const std::uint32_t on = 0u - std::uint32_t{chain.stamp == listStamp_};
+  notes[(chain.last & on) | (position & ~on)].nextOfA = (position & on) | (noPair & ~on);
+  chain.first = (chain.first & on) | (position & ~on);
   chain.last = position;
-  chain.pairsAndRun = chained ? chain.pairsAndRun + 1 : 1;
+  chain.pairsAndRun = ((chain.pairsAndRun + 1) & on) | (1u & ~on);
   chain.stamp = listStamp_;
 }
 
