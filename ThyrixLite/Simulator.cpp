@@ -76,7 +76,8 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
   reserveFor(bodyStates_, objects.size() + added.size());
   reserveFor(pendingBodies_, objects.size() + added.size());
   reserveFor(customObjects_, objects.size() + added.size());
-  reserveFor(listedObjects_, objects.size() + added.size());
+  reserveFor(listedObjects_, objects.size() + added.size() + 1);
+  reserveFor(countedObjects_, objects.size() + added.size() + 1);
   reserveFor(shapePoses_, shapes_.size() + shapes);
   reserveFor(shapeMoved_, shapes_.size() + shapes);
   reserveFor(gridSlot_, shapes_.size() + shapes);
@@ -196,6 +197,8 @@ void Simulator::eraseContacts() {
   contacts.items_.clear();
   contactsComplete_ = false;
   clearContactLists();
+  resetCounts();  // (the list is empty: every contact is counted)
+  countsComplete_ = true;
 }
 
 void Simulator::startDrag(PhysicalObject& object, Vector2 grabPoint) {

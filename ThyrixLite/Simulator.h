@@ -391,9 +391,22 @@ class Simulator : public World {
   // others' hooks are called without virtual calls).
   std::vector<std::uint32_t> customObjects_;
 
-  std::vector<ContactInfo> objectContacts_;         // every object's contacts, object by object
-  std::vector<std::uint32_t> objectContactCursor_;  // per object, 0 outside indexContacts
-  std::vector<std::uint32_t> listedObjects_;        // objects whose `contacts` is not empty
+  std::vector<ContactInfo> objectContacts_;  // every object's contacts, object by object
+  // Each object's contacts are counted as detection appends them (countContact()), each
+  // object listed at its first: indexContacts() then needs no pass of its own to count.
+  // objectContactCursor_ is zero for every object not in countedObjects_ (outside
+  // indexContacts).
+  std::vector<std::uint32_t> objectContactCursor_;  // per object: its count, then a cursor
+  std::vector<std::uint32_t> countedObjects_;       // the first countedCount_ have counts
+  std::size_t countedCount_ = 0;  // (std::size_t: no alias of the uint32 entries it indexes)
+  bool countsComplete_ = true;    // every contact of `contacts` is counted
+  std::vector<std::uint32_t> listedObjects_;  // the first listedCount_ have `contacts` not empty
+  std::size_t listedCount_ = 0;
+  /// Counts a contact of bodies @p bodyA and @p bodyB (countedObjects_ has room for every
+  /// object and one more).
+  void countContact(std::uint32_t bodyA, std::uint32_t bodyB);
+  /// Zeroes the counts, and sizes countedObjects_ for the objects.
+  void resetCounts();
 
   std::vector<SolverBody> bodies_;  // valid for the bodies of this step's rows only
   std::vector<std::uint8_t> movable_;

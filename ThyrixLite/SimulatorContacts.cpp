@@ -98,6 +98,7 @@ void Simulator::detectContacts() {
     previousChains_.resize(shapes_.size());
   }
   nextListStamp();
+  if (countedObjects_.size() < objects.size() + 1) countedObjects_.resize(objects.size() + 1);
   contactsSolved_ = false;  // these contacts, until the solver gives them forces
   statistics_.reusedContacts = 0;
   // (Without new objects or objects with rules, there is nothing to look at.)
@@ -357,6 +358,24 @@ inline void Simulator::noteContactPair(ContactPair* notes, std::uint32_t positio
   chain.stamp = listStamp_;
 }
 
+// Inline: every contact appended is counted.
+inline void Simulator::countContact(std::uint32_t bodyA, std::uint32_t bodyB) {
+  // Each body listed at its first contact without a branch (which contact is a body's first is
+  // random to the predictor): written in the next place, which is kept if it was.
+  std::uint32_t* const count = objectContactCursor_.data();
+  std::uint32_t* const counted = countedObjects_.data();
+  counted[countedCount_] = bodyA;
+  countedCount_ += std::size_t{count[bodyA]++ == 0};
+  counted[countedCount_] = bodyB;
+  countedCount_ += std::size_t{count[bodyB]++ == 0};
+}
+
+void Simulator::resetCounts() {
+  for (std::size_t k = 0; k < countedCount_; ++k) objectContactCursor_[countedObjects_[k]] = 0;
+  countedCount_ = 0;
+  if (countedObjects_.size() < objects.size() + 1) countedObjects_.resize(objects.size() + 1);
+}
+
 void Simulator::reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
   // Neither shape moved and its filters did not change: the contacts are last detection's.
   // (Pairs within one multi-body object are always tested: whether they collide is its call.)
@@ -371,6 +390,7 @@ void Simulator::reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
   for (std::uint32_t k = range.begin; k < range.end; ++k) {
     contacts.items_.push_back(previousContacts_[k]);
     contacts.items_.back().force = 0;  // the solver's output, not detection's
+    countContact(previousContacts_[k].bodyA, previousContacts_[k].bodyB);
     noteContactPair(notes, position++, shapeA, shapeB, k == range.begin);
     ++statistics_.reusedContacts;
   }
@@ -383,6 +403,7 @@ inline void Simulator::appendContact(std::uint32_t shapeA, std::uint32_t shapeB,
   const Shape& b = shapes_[shapeB];
   contacts.items_.push_back({a.object, b.object, a.primitive, b.primitive, a.body, b.body, shapeA,
                              shapeB, p.feature, 0, p.point, normal, p.depth});
+  countContact(a.body, b.body);
 }
 
 // Inline: the narrow phase calls it for every pair in reach.
@@ -471,20 +492,18 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
 void Simulator::indexContacts() {
   // Counting sort by object into one array; each object's `contacts` is its slice of it. Only
   // the objects with contacts are visited (listed in order of their first contact), so a
-  // world of many objects with few contacts pays for its contacts, not for its size.
+  // world of many objects with few contacts pays for its contacts, not for its size. The
+  // counts are detection's (countContact()), unless this list was indexed already.
   clearContactLists();
-  objectContacts_.resize(2 * contacts.size());
-  // objectContactCursor_ is zero for every object between calls: count, listing each object
-  // at its first contact.
-  const auto count = [this](std::uint32_t body) {
-    if (objectContactCursor_[body]++ == 0) listedObjects_.push_back(body);
-  };
-  for (const GlobalContactInfo& c : contacts.items_) {
-    count(c.bodyA);
-    count(c.bodyB);
+  if (!countsComplete_) {
+    resetCounts();
+    for (const GlobalContactInfo& c : contacts.items_) countContact(c.bodyA, c.bodyB);
   }
+  countsComplete_ = false;  // the counts become cursors, and are zeroed below
+  objectContacts_.resize(2 * contacts.size());
+  const std::span<const std::uint32_t> counted(countedObjects_.data(), countedCount_);
   std::uint32_t offset = 0;
-  for (const std::uint32_t i : listedObjects_) {
+  for (const std::uint32_t i : counted) {
     const std::uint32_t n = objectContactCursor_[i];
     objectContactCursor_[i] = offset;
     offset += n;
@@ -498,17 +517,22 @@ void Simulator::indexContacts() {
   }
   // Each cursor ended where the next listed object's slice begins: slice, and zero it again.
   std::uint32_t begin = 0;
-  for (const std::uint32_t i : listedObjects_) {
+  for (const std::uint32_t i : counted) {
     const std::uint32_t end = objectContactCursor_[i];
     objects[i].contacts = std::span(objectContacts_).subspan(begin, end - begin);
     objectContactCursor_[i] = 0;
     begin = end;
   }
+  // The counted objects are the listed ones now (and none is counted).
+  std::swap(listedObjects_, countedObjects_);
+  listedCount_ = countedCount_;
+  countedCount_ = 0;
+  if (countedObjects_.size() < objects.size() + 1) countedObjects_.resize(objects.size() + 1);
 }
 
 void Simulator::clearContactLists() {
-  for (const std::uint32_t i : listedObjects_) objects[i].contacts = {};
-  listedObjects_.clear();
+  for (std::size_t k = 0; k < listedCount_; ++k) objects[listedObjects_[k]].contacts = {};
+  listedCount_ = 0;
 }
 
 }  // namespace thyrix

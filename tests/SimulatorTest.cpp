@@ -160,6 +160,68 @@ TEST_P(SimulatorTest, ContactsAreIndexedInBothObjectsWithOpposedNormalsAndForces
   }
 }
 
+/// Each object's `contacts` lists, in order, every contact of `simulator.contacts` it is in
+/// (once per side), as seen from its side.
+void expectContactListsMatch(const Simulator& simulator) {
+  for (std::size_t i = 0; i < simulator.objects.size(); ++i) {
+    const PhysicalObject& object = simulator.objects[i];
+    std::size_t next = 0;
+    for (std::uint32_t k = 0; k < simulator.contacts.size(); ++k) {
+      const GlobalContactInfo& global = simulator.contacts[k];
+      for (const bool sideA : {true, false}) {
+        if ((sideA ? global.bodyA : global.bodyB) != i) continue;
+        ASSERT_LT(next, object.contacts.size()) << "object " << i << ", contact " << k;
+        const ContactInfo& info = object.contacts[next++];
+        EXPECT_EQ(info.index, k);
+        EXPECT_EQ(info.other, sideA ? global.objectB : global.objectA);
+        EXPECT_EQ(info.primitive, sideA ? global.primitiveA : global.primitiveB);
+        EXPECT_EQ(info.normal, sideA ? -global.normal : global.normal);
+      }
+    }
+    EXPECT_EQ(next, object.contacts.size()) << "object " << i;
+  }
+}
+
+// The objects' lists follow the contacts whatever phases a program runs by hand: detection
+// counts each object's contacts as it appends them, for indexContacts.
+TEST(Simulator, ContactListsFollowThePhasesRunByHand) {
+  Simulator simulator;
+  const auto bodies = addCornerPile(simulator, 7);
+  for (int step = 0; step < 100; ++step) {
+    scenes::push(bodies, {-1, -1});
+    simulator.advanceTime();
+  }
+  expectContactListsMatch(simulator);
+  simulator.indexContacts();  // again: the same lists
+  expectContactListsMatch(simulator);
+  const std::size_t before = simulator.contacts.size();
+  ASSERT_GT(before, 10u);
+  simulator.detectContacts();  // appended to the list (most contacts twice)
+  EXPECT_GT(simulator.contacts.size(), before);
+  simulator.indexContacts();
+  expectContactListsMatch(simulator);
+  simulator.eraseContacts();
+  for (const PhysicalObject& object : simulator.objects) EXPECT_TRUE(object.contacts.empty());
+  simulator.detectContacts();  // detected, not indexed, erased: nothing left of its counts
+  simulator.eraseContacts();
+  simulator.detectContacts();
+  simulator.indexContacts();
+  expectContactListsMatch(simulator);
+  // An object registered between detection and indexing, touching one already there.
+  simulator.eraseContacts();
+  simulator.detectContacts();
+  auto& added = simulator.registerObject(std::make_unique<Circle>(real(0.3), real(1)));
+  added.r = bodies[0]->r;
+  simulator.indexContacts();
+  expectContactListsMatch(simulator);
+  simulator.detectContacts();
+  simulator.indexContacts();
+  expectContactListsMatch(simulator);
+  EXPECT_FALSE(added.contacts.empty());
+  for (int step = 0; step < 5; ++step) simulator.advanceTime();
+  expectContactListsMatch(simulator);
+}
+
 /// The largest overlap of a circle of radius 0.1 pushed onto a floor at 4 m/s (0.04 m, 40% of
 /// its radius, per step), its heights chosen so that no step ends exactly on the floor.
 real overlapOfFastCircle(ContactSolverKind solver, real speculativeTravel) {
