@@ -95,6 +95,8 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
   state.shapeCount = static_cast<std::uint32_t>(object.primitives().size());
   state.standalone = state.shapeCount == 1 && object.primitives()[0] == &object;
   state.restsCheaply = state.standalone || state.shapeCount == 0;
+  state.standaloneCircle =
+      state.standalone && object.primitives()[0]->shapeType() == ShapeType::Circle;
   bodyStates_.push_back(state);  // unknown: its first detection computes everything
   for (Primitive* primitive : object.primitives()) {
     const auto shape = static_cast<std::uint32_t>(shapes_.size());

@@ -196,8 +196,9 @@ class Simulator : public World {
     std::uint32_t firstShape = 0;   // its shapes are firstShape, firstShape + 1, ...
     std::uint32_t shapeCount = 0;
     bool movable = false;
-    bool standalone = false;    // the body is its one primitive
-    bool restsCheaply = false;  // standalone, or no shape: at rest, only its sensors to note
+    bool standalone = false;        // the body is its one primitive
+    bool standaloneCircle = false;  // ... and that is a circle
+    bool restsCheaply = false;      // standalone, or no shape: at rest, only its sensors to note
   };
   /// The pose of a primitive its geometry was computed from (not kept for a standalone
   /// circle, whose body's pose says it), its capsule half axis, and its half length (fixed at
@@ -215,6 +216,8 @@ class Simulator : public World {
   /// updateGeometry for a body that changed (its collision filters with @p newFilters), or
   /// that has several shapes (whose poses are then compared one by one).
   void updateBody(std::uint32_t index, bool changed, bool newFilters);
+  /// updateBody for a standalone circle whose filters did not change (@p changed: its pose did).
+  void updateMovedCircle(BodyState& state, bool changed);
   /// updateBody's loop over the shapes of a body that is not its one primitive (@p known:
   /// detected before, as of the start of updateBody).
   void updateComposedBody(const BodyState& state, bool changed, bool known);
