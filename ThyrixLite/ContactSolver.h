@@ -26,10 +26,23 @@ enum class ContactSolverKind : std::uint8_t {
 struct ContactSolverSettings {
   /// Gauss-Seidel stops when no force changes the velocity of its contact by more than this (m/s).
   real gaussSeidelTolerance = std::is_same_v<real, float> ? real(1e-5) : real(1e-7);
-  /// Gauss-Seidel stops after this many sweeps even if not converged. With acceleration, 20
-  /// sweeps keep a 30-body-high pile's overlaps under 1% of the radius (bench/README.md); raise
-  /// it for more exact forces.
+  /// Gauss-Seidel stops after this many sweeps even if not converged (an island swept in
+  /// height order: gaussSeidelMaxIterationsInHeightOrder). With acceleration, 20 sweeps keep a
+  /// 30-body-high pile's overlaps under 1% of the radius (bench/README.md); raise it for more
+  /// exact forces.
   int gaussSeidelMaxIterations = 20;
+  /// In a world with gravity (Simulator::setGravity()), Gauss-Seidel sweeps each island's
+  /// contacts in order of height against gravity, the first sweep from the lowest up, the next
+  /// from the highest down, and so on: a sweep then carries the floor's reaction up the whole
+  /// load path, the next the weight down, and a pile converges in fewer sweeps than in
+  /// detection order. Off, or without gravity, in detection order.
+  bool gaussSeidelHeightOrder = true;
+  /// The cap of sweeps for an island swept in height order (its contacts not all at one
+  /// height), in place of gaussSeidelMaxIterations. 16 sweeps in height order keep a
+  /// 30-body-high pile's overlaps as small as 20 in detection order do (measured over 32
+  /// seeds); an even cap ends with a sweep from the top down, which keeps them smaller than an
+  /// odd one.
+  int gaussSeidelMaxIterationsInHeightOrder = 16;
   /// Gauss-Seidel follows each sweep with a nonsmooth nonlinear conjugate gradient step
   /// (GaussSeidelSolver): far fewer sweeps for loads carried through many contacts.
   bool accelerateGaussSeidel = true;
@@ -78,6 +91,11 @@ struct ContactConstraint {
   real armB = 0;        ///< (p - c_b) x n
   real target = 0;      ///< c: the least allowed normal velocity
   real force = 0;       ///< f: the normal force, the unknown (Gauss-Seidel starts from it)
+  /// Where Gauss-Seidel sweeps the row: an island's rows go in increasing order of this key
+  /// (nearly: see GaussSeidelSolver), ties in island order; all equal, in island order. The
+  /// Simulator gives a contact's height against gravity (its point . -gravity), 0 without it
+  /// or without ContactSolverSettings::gaussSeidelHeightOrder.
+  real order = 0;
 
   /// The normal relative velocity `w = J u` for the current body velocities.
   [[nodiscard]] real normalVelocity(const SolverBody& bodyA, const SolverBody& bodyB) const {

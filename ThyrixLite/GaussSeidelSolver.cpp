@@ -18,8 +18,9 @@ namespace {
 
 constexpr std::uint32_t noBody = ~std::uint32_t{0};
 
-/// Where the island's row @p p goes among its @p n local rows. Rows come in detection order,
-/// where a body's contacts follow one another; then every row would wait for the previous
+/// Where the island's row of rank @p p (in sweep order, see sweepOrder()) goes among its @p n
+/// local rows. Rows come in detection order or by height, where a body's contacts follow one
+/// another or are close; then every row would wait for the previous
 /// one's velocity update (a sweep is latency-bound). Each block of 32 rows is taken as four
 /// streams of 8 in turn (0, 8, 16, 24, 1, 9, ...): a row then seldom shares a body with the
 /// three before it, and rows overlap in the processor, while the order stays nearly the same,
@@ -61,6 +62,8 @@ real convergenceBound(real tolerance, real leastResponse, std::size_t n) {
 
 void GaussSeidelSolver::reserve(std::size_t bodies, std::size_t rows) {
   for (auto* buffer : {&forces_, &changes_, &direction_, &responses_}) buffer->reserve(rows);
+  slot_.reserve(rows);
+  bucketStart_.reserve(rows + 1);
   rows_.reserve(rows);
   turning_.reserve(rows);
   // Each row may bring two bodies of its own (a fixed body gets one copy per row).
@@ -77,13 +80,15 @@ int GaussSeidelSolver::solve(std::span<const std::uint32_t> island,
   const real tolerance = settings.gaussSeidelTolerance;
   const real bound = convergenceBound(tolerance, leastResponse, rows_.size());
   const bool accelerate = settings.accelerateGaussSeidel;
+  const int maxSweeps =
+      ordered_ ? settings.gaussSeidelMaxIterationsInHeightOrder : settings.gaussSeidelMaxIterations;
   // The first sweep restarts the direction (lastNorm is 0): it needs no zeroing. resize, not
   // assign: assign would reallocate to the exact size at each new largest island (a growing
   // pile: nearly every step), resize grows geometrically.
   if (accelerate) direction_.resize(rows_.size());
   real lastNorm = 0;  // squared norm of the previous sweep's change
   int sweeps = 0;
-  while (sweeps < settings.gaussSeidelMaxIterations) {
+  while (sweeps < maxSweeps) {
     ++sweeps;
     // Symmetric Gauss-Seidel: alternate sweep directions, so that a correction travels through
     // a long chain of contacts both ways (the weight down, the floor's reaction up).
@@ -96,7 +101,7 @@ int GaussSeidelSolver::solve(std::span<const std::uint32_t> island,
     // NaN norm leaves the decision to largestChange(), which skips NaN changes.
     if (!(squaredNorm > bound) && largestChange() <= tolerance) break;
     // The last sweep is not followed by a conjugate step: the result is a projected sweep's.
-    if (!accelerate || sweeps == settings.gaussSeidelMaxIterations) continue;
+    if (!accelerate || sweeps == maxSweeps) continue;
     if (lastNorm > 0 && squaredNorm <= lastNorm) {
       const real beta = squaredNorm / lastNorm;
       turningIsland_ ? conjugateStep<true>(beta) : conjugateStep<false>(beta);
@@ -110,10 +115,49 @@ int GaussSeidelSolver::solve(std::span<const std::uint32_t> island,
   return sweeps;
 }
 
+void GaussSeidelSolver::sweepOrder(std::span<const std::uint32_t> island,
+                                   std::span<const ContactConstraint> rows) {
+  const std::size_t n = island.size();
+  slot_.resize(n);
+  std::uint32_t* const slot = slot_.data();
+  constexpr real infinity = std::numeric_limits<real>::infinity();
+  real low = infinity;
+  real high = -infinity;
+  for (const std::uint32_t k : island) {
+    // NaN keys are skipped (std::min and std::max keep the first argument).
+    low = std::min(low, rows[k].order);
+    high = std::max(high, rows[k].order);
+  }
+  const real range = high - low;
+  ordered_ = range > 0 && range < infinity;
+  if (!ordered_) {  // all keys equal (no gravity): island order
+    for (std::size_t p = 0; p < n; ++p) slot[p] = static_cast<std::uint32_t>(interleaved(p, n));
+    return;
+  }
+  // A counting sort into n buckets of equal width: nearly the order of the keys, in a few
+  // passes without a comparison. A NaN key goes to the first bucket.
+  const std::size_t buckets = n;
+  const real scale = static_cast<real>(buckets) / range;
+  const real last = static_cast<real>(buckets - 1);
+  bucketStart_.assign(buckets + 1, 0);
+  std::uint32_t* const start = bucketStart_.data();
+  for (std::size_t p = 0; p < n; ++p) {
+    const real t = (rows[island[p]].order - low) * scale;
+    const auto bucket = t > 0 ? static_cast<std::uint32_t>(std::min(t, last)) : std::uint32_t{0};
+    slot[p] = bucket;
+    ++start[bucket + 1];
+  }
+  for (std::size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
+  for (std::size_t p = 0; p < n; ++p)
+    slot[p] = static_cast<std::uint32_t>(interleaved(start[slot[p]]++, n));
+}
+
 real GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
                                std::span<const ContactConstraint> rows,
                                std::span<const SolverBody> bodies, real relaxation) {
   const std::size_t n = island.size();
+  sweepOrder(island, rows);
+  const std::uint32_t* const slot = slot_.data();
   if (localBody_.size() < bodies.size()) localBody_.resize(bodies.size(), noBody);
   // Each row brings at most two bodies: the local arrays are sized once, then filled through
   // plain pointers (one pass, no growth checks).
@@ -169,7 +213,7 @@ real GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
   real leastResponse = std::numeric_limits<real>::infinity();
   for (std::size_t p = 0; p < n; ++p) {
     const ContactConstraint& c = rows[island[p]];
-    const std::size_t q = interleaved(p, n);
+    const std::size_t q = slot[p];
     const SolverBody& bodyA = bodies[c.a];
     const SolverBody& bodyB = bodies[c.b];
     const real response = c.selfResponse(bodyA, bodyB);
@@ -202,7 +246,7 @@ real GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
         const ContactConstraint& d = rows[island[r]];
         const SolverBody& dA = bodies[d.a];
         const SolverBody& dB = bodies[d.b];
-        turning_[interleaved(r, n)] = turningOf(d, dA, dB, inverseScaledOf(d.selfResponse(dA, dB)));
+        turning_[slot[r]] = turningOf(d, dA, dB, inverseScaledOf(d.selfResponse(dA, dB)));
       }
     }
   }
@@ -328,8 +372,7 @@ void GaussSeidelSolver::conjugateStep(real beta) {
 
 void GaussSeidelSolver::scatter(std::span<const std::uint32_t> island,
                                 std::span<ContactConstraint> rows, std::span<SolverBody> bodies) {
-  for (std::size_t p = 0; p < island.size(); ++p)
-    rows[island[p]].force = forces_[interleaved(p, island.size())];
+  for (std::size_t p = 0; p < island.size(); ++p) rows[island[p]].force = forces_[slot_[p]];
   for (std::size_t l = 0; l < bodyCount_; ++l) {
     const std::uint32_t body = globalBody_[l];
     if (body == noBody) continue;  // a fixed body's copy

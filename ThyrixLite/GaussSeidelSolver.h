@@ -26,6 +26,15 @@ namespace thyrix {
 /// through a long chain of contacts (a pile's weight down to its floor) then converges in a few
 /// tens of sweeps instead of hundreds.
 ///
+/// The rows are swept in order of their keys (ContactConstraint::order; the Simulator's are
+/// heights against gravity), nearly: a counting sort into as many buckets of equal width as
+/// rows, ties in island order. Sweeping a pile from its floor up carries the floor's reaction
+/// up the whole load path in one sweep, the weight down in the next: measured on piles of
+/// 1000 circles, 16 sweeps by height keep the overlaps as small as 20 in detection order (and
+/// 14 do not; an odd cap, which ends going up, neither). Such an island has its own cap,
+/// ContactSolverSettings::gaussSeidelMaxIterationsInHeightOrder; keys all equal (no gravity),
+/// or not all finite, leave the island's order and gaussSeidelMaxIterations.
+///
 /// The solver copies an island into contiguous local arrays (rows with what a sweep needs
 /// precomputed, bodies in order of first use) before sweeping, so a sweep streams through memory;
 /// the buffers are kept between calls (no allocation once they reached the largest island).
@@ -69,6 +78,9 @@ class GaussSeidelSolver {
     real turnB;  // of omegaB: armB / IB
   };
 
+  /// Fills slot_, each island position's local row: the rows nearly in order of their keys
+  /// (ContactConstraint::order), interleaved. Sets ordered_.
+  void sweepOrder(std::span<const std::uint32_t> island, std::span<const ContactConstraint> rows);
   /// Copies the island into the local rows and bodies, the rows interleaved so that
   /// consecutive ones seldom share a body (see interleaved() in the source).
   /// @return the least A_kk of the rows, NaN if one is NaN.
@@ -97,10 +109,13 @@ class GaussSeidelSolver {
   std::vector<real> omegas_;         // their angular velocities
   std::size_t bodyCount_ = 0;
   std::vector<real> forces_;
-  std::vector<real> changes_;              // each force's change in the last sweep
-  std::vector<real> direction_;            // the conjugate direction p
-  std::vector<std::uint32_t> globalBody_;  // local body -> index in the caller's bodies, or none
-  std::vector<std::uint32_t> localBody_;   // caller's body -> local index, or none
+  std::vector<real> changes_;               // each force's change in the last sweep
+  std::vector<real> direction_;             // the conjugate direction p
+  bool ordered_ = false;                    // the island's rows are in order of their keys
+  std::vector<std::uint32_t> slot_;         // island position -> local row
+  std::vector<std::uint32_t> bucketStart_;  // sweepOrder()'s counting sort
+  std::vector<std::uint32_t> globalBody_;   // local body -> index in the caller's bodies, or none
+  std::vector<std::uint32_t> localBody_;    // caller's body -> local index, or none
 };
 
 }  // namespace thyrix

@@ -55,6 +55,8 @@ void Simulator::solveContacts() {
     touchedCount += first ? 1 : 0;
   };
   ContactConstraint* const rows = rows_.data();
+  // Gauss-Seidel sweeps up and down the load's path (see ContactConstraint::order).
+  const Vector2 up = settings_.gaussSeidelHeightOrder ? -gravity_ : Vector2{};
   for (std::size_t k = 0; k < contactCount; ++k) {
     const GlobalContactInfo& c = contacts.items_[k];
     touch(c.bodyA);
@@ -78,6 +80,7 @@ void Simulator::solveContacts() {
     // mispredicted half the time; a conditional factor compiled to a branch too).
     row.target = depthFactor[c.depth > 0 ? 1 : 0] * c.depth / dt;
     row.force = 0;
+    row.order = dot(c.point, up);
   }
   // A joint limit is a row of its object alone; its Jacobian is the object's business.
   for (std::size_t j = 0; j < internal_.size(); ++j) {

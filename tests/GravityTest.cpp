@@ -335,6 +335,8 @@ TEST_P(GravityTest, APileInTheFieldHasTheBitsOfThePileWeighedByHand) {
   field.setContactSolver(GetParam());
   byHand.setContactSolver(GetParam());
   field.setGravity(g);
+  // Gravity also orders Gauss-Seidel's sweeps by height, which the weights by hand do not.
+  field.solverSettings().gaussSeidelHeightOrder = false;
   addWeighablePile(field);
   const std::vector<PhysicalObject*> bodies = addWeighablePile(byHand);
   std::size_t contacts = 0;
