@@ -169,11 +169,11 @@ void ArticulatedBody::forwardKinematics() {
   // (slot i, the usual case within a limb), as in the articulated-body passes: each link waits
   // for its parent's, and a round trip through memory would lengthen the chain.
   anglesAndAxes(nullptr, 0);
-  if (allInChain_) {
-    chainOrigins([](std::size_t, Vector2, real, Vector2) {});
-  } else {
-    treeOrigins();
-  }
+  const auto nothing = [](std::size_t, Vector2, real, Vector2) {};
+  if (allInChain_)
+    linkOrigins<true>(nothing);
+  else
+    linkOrigins<false>(nothing);
 }
 
 void ArticulatedBody::anglesAndAxes(const real* rates, real dt) {
@@ -205,28 +205,6 @@ void ArticulatedBody::anglesAndAxes(const real* rates, real dt) {
     cosSin(angle_, axis_);
   // Everything that depends on the configuration is now out of date.
   inertiasStale_ = true;
-}
-
-void ArticulatedBody::treeOrigins() {
-  origin_[0] = basePosition_;
-  comOffset_[0] = {};
-  Vector2 parentOrigin = origin_[0];
-  Vector2 parentAxis = axis_[0];
-  for (std::size_t i = 0; i < links_.size(); ++i) {
-    const ArticulatedLink& l = links_[i];
-    const std::size_t self = i + 1;
-    const std::size_t p = parentSlot_[i];
-    if (p != i) {
-      parentOrigin = origin_[p];
-      parentAxis = axis_[p];
-    }
-    const Vector2 shift = rotated(parentAxis, l.jointPosition);
-    shift_[i] = shift;
-    parentOrigin += shift;
-    origin_[self] = parentOrigin;
-    parentAxis = axis_[self];
-    comOffset_[self] = rotated(parentAxis, l.centerOfMass);
-  }
 }
 
 // --- solve and respond -----------------------------------------------------------------------

@@ -192,22 +192,17 @@ class ArticulatedBody {
   void integrate(const Output& out, real dt);
   /// integrate(@p out, @p dt), calling `eachLink(i, centerOfMass(i), angle(i), axis(i))` for
   /// every link i, in index order, as soon as link i's pose is known (the accessors below give
-  /// it then too). For a plain chain (every link's parent the link before it) the calls come
-  /// from within the kinematics' last loop over the links, with the pose at hand, so that a
-  /// caller placing a shape on every link does so without a loop of its own.
+  /// it then too). The calls come from within the kinematics' last loop over the links, with
+  /// the pose at hand, so that a caller placing a shape on every link does so without a loop of
+  /// its own.
   template <class EachLink>
   void integrate(const Output& out, real dt, EachLink&& eachLink) {
     moveBase(out, dt);
     anglesAndAxes(out.jointRates.data(), dt);
-    if (allInChain_) {
-      chainOrigins(eachLink);
-    } else {
-      treeOrigins();
-      for (std::size_t i = 0; i < links_.size(); ++i) {
-        const int link = static_cast<int>(i);
-        eachLink(i, centerOfMass(link), angle(link), axis(link));
-      }
-    }
+    if (allInChain_)
+      linkOrigins<true>(eachLink);
+    else
+      linkOrigins<false>(eachLink);
   }
 
   // --- kinematics ----------------------------------------------------------------------------
@@ -289,17 +284,23 @@ class ArticulatedBody {
   /// The first two sweeps of forwardKinematics(): every body's angle, then its axis; with
   /// @p rates (not null) integrate()'s move of the joints too, `q_i += rates[i] dt`.
   void anglesAndAxes(const real* rates, real dt);
-  /// The last sweep of forwardKinematics() (the origins and centre-of-mass offsets) for any tree.
-  void treeOrigins();
-  /// treeOrigins() for a plain chain (allInChain_: every parent at slot i, carried in
-  /// registers), calling @p eachLink as integrate() says once link i's pose is stored.
-  template <class EachLink>
-  void chainOrigins(EachLink&& eachLink) {
+  /// The last sweep of forwardKinematics(): every link's origin and centre-of-mass offset,
+  /// calling @p eachLink as integrate() says once link i's pose is stored. @p plainChain is
+  /// allInChain_: every parent is then at slot i, carried in registers, with no slot to test.
+  template <bool plainChain, class EachLink>
+  void linkOrigins(EachLink&& eachLink) {
     origin_[0] = basePosition_;
     comOffset_[0] = {};
     Vector2 parentOrigin = basePosition_;
     Vector2 parentAxis = axis_[0];
     for (std::size_t i = 0; i < links_.size(); ++i) {
+      if constexpr (!plainChain) {
+        const std::size_t p = parentSlot_[i];
+        if (p != i) {
+          parentOrigin = origin_[p];
+          parentAxis = axis_[p];
+        }
+      }
       const ArticulatedLink& l = links_[i];
       const Vector2 shift = rotated(parentAxis, l.jointPosition);
       shift_[i] = shift;

@@ -864,8 +864,8 @@ TEST(ArticulatedBodyTest, IntegrateMovesTheStateByTheVelocities) {
 }
 
 TEST(ArticulatedBodyTest, IntegrateCallsEachLinkWithItsPoseInOrder) {
-  // A chain (the calls come from within the kinematics' loop) and a tree (after it): each
-  // link once, in index order, with the pose the accessors give, the same state as integrate()
+  // A chain and a tree (the calls come from within the kinematics' loop in both): each link
+  // once, in index order, with the pose the accessors give, the same state as integrate()
   // without the calls, and link i's pose already there when it is called.
   for (const Shape shape : {Shape::Chain, Shape::Tree}) {
     const Problem p = randomProblem(12, shape, 31);
