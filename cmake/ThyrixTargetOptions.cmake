@@ -6,6 +6,10 @@ function(thyrix_target_options target)
   if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
     target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
                                              -Wno-sign-conversion)
+    # No multiply-add fused where the compiler chooses (GCC does by default once the target
+    # has FMA, e.g. -march=native): the hand-written vector paths (the articulated chain's SSE2
+    # pairs) then keep the bits of their scalar twins, which the compiler would fuse otherwise.
+    target_compile_options(${target} PRIVATE -ffp-contract=off)
     if(THYRIX_WARNINGS_AS_ERRORS)
       target_compile_options(${target} PRIVATE -Werror)
     endif()

@@ -11,6 +11,7 @@
 
 #include "TestTolerances.h"
 #include "support/AllocationCounter.h"
+#include "support/SolverCases.h"
 
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixPro/ArticulatedBody.h>
@@ -907,6 +908,32 @@ TEST(ArticulatedBodyTest, SameInputGivesBitIdenticalOutput) {
   second.solve(p.torques, p.wrenches, b);
   EXPECT_EQ(a.velocities, b.velocities);
   EXPECT_EQ(a.jointRates, b.jointRates);
+}
+
+TEST(ArticulatedBodyTest, ZeroWrenchesGiveTheBitsOfNoWrenches) {
+  // A plain chain's inward pass with wrenches runs in SSE2 pairs, without them in the scalar
+  // loop: subtracting zero wrenches changes no bit, so the two must agree bit for bit, which
+  // holds only if the pairs do the scalar loop's operations (and the compiler fuses neither
+  // into multiply-adds of its own choosing).
+  for (const Shape shape : {Shape::Chain, Shape::Tree}) {
+    const Problem p = randomProblem(30, shape, 77);
+    ArticulatedBody withZeros = p.build();
+    ArticulatedBody without = p.build();
+    ArticulatedBody::Output a = withZeros.makeOutput();
+    ArticulatedBody::Output b = without.makeOutput();
+    const std::vector<Vector3> zeros(p.wrenches.size());
+    withZeros.solve(p.torques, zeros, a);
+    without.solve(p.torques, {}, b);
+    for (std::size_t k = 0; k < a.velocities.size(); ++k) {
+      const Vector3& va = a.velocities[k];
+      const Vector3& vb = b.velocities[k];
+      EXPECT_EQ(test::bitsOf(va.x), test::bitsOf(vb.x)) << k;
+      EXPECT_EQ(test::bitsOf(va.y), test::bitsOf(vb.y)) << k;
+      EXPECT_EQ(test::bitsOf(va.z), test::bitsOf(vb.z)) << k;
+    }
+    for (std::size_t i = 0; i < a.jointRates.size(); ++i)
+      EXPECT_EQ(test::bitsOf(a.jointRates[i]), test::bitsOf(b.jointRates[i])) << i;
+  }
 }
 
 TEST(ArticulatedBodyTest, SolveAndRespondDoNotAllocate) {
