@@ -3,6 +3,7 @@
 /// geometry is in SimulatorGeometry.cpp).
 #include <ThyrixLite/NarrowPhase.h>
 #include <ThyrixLite/Simulator.h>
+#include <Tools/ProcessorFeatures.h>
 
 #include <algorithm>
 #include <bit>
@@ -11,7 +12,7 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
-#if defined(__GNUC__) && defined(__x86_64__)
+#if defined(THYRIX_AVX2_DISPATCH)
 #include <immintrin.h>
 #endif
 
@@ -223,8 +224,7 @@ void reachFullWord(const BorderLine* lines, const BoundingBox* boxes, std::uint6
 }
 #endif
 
-#if defined(__GNUC__) && defined(__x86_64__)
-#define THYRIX_REACH_AVX2 1
+#if defined(THYRIX_AVX2_DISPATCH)
 /// reachFullWord four boxes at a time (one box per lane), for a processor with AVX2: the same
 /// operations in the same order in each lane, and AVX2 brings no fused multiply-add (that is
 /// FMA's), so the same bits. (Double only.)
@@ -272,12 +272,6 @@ template <std::size_t Borders>
   }
   for (std::size_t k = 0; k < Borders; ++k) reach[k] |= bits[k];
 }
-
-/// Whether the processor runs AVX2, asked once.
-bool hasAvx2() {
-  static const bool has = __builtin_cpu_supports("avx2") != 0;
-  return has;
-}
 #endif
 
 /// Sets in @p reach (one word per border of @p lines) the bits of @p retest whose boxes (from
@@ -298,8 +292,8 @@ void reachWord(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t 
   if (retest == ~std::uint64_t{0}) {
 #if defined(__SSE2__)
     if constexpr (std::is_same_v<real, double>) {
-#if defined(THYRIX_REACH_AVX2)
-      if (hasAvx2()) {
+#if defined(THYRIX_AVX2_DISPATCH)
+      if (processorHasAvx2()) {
         reachFullWordAvx2<Borders>(lines, boxes, reach);
         return;
       }

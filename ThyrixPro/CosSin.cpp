@@ -1,6 +1,7 @@
 /// @file CosSin.cpp
 /// @brief cosSinKernel(): the loop over many angles, with AVX2 where the processor has it.
 #include <ThyrixPro/CosSin.h>
+#include <Tools/ProcessorFeatures.h>
 
 namespace thyrix {
 
@@ -11,27 +12,20 @@ void kernelLoop(std::span<const real> angles, std::span<Vector2> out) {
   for (std::size_t k = 0; k < angles.size(); ++k) out[k] = detail::cosSinReduced(angles[k]);
 }
 
-#if defined(__GNUC__) && defined(__x86_64__)
-#define THYRIX_COSSIN_AVX2 1
+#if defined(THYRIX_AVX2_DISPATCH)
 /// The same loop for AVX2: four angles at a time (the forward kinematics' kernel took about
 /// 40 instructions a link in SSE2, 19 in AVX2). The same operations in each lane, and AVX2
 /// brings no fused multiply-add (that is FMA's), so the same bits.
 [[gnu::target("avx2")]] void kernelLoopAvx2(std::span<const real> angles, std::span<Vector2> out) {
   for (std::size_t k = 0; k < angles.size(); ++k) out[k] = detail::cosSinReduced(angles[k]);
 }
-
-/// Whether the processor runs AVX2, asked once.
-bool hasAvx2() {
-  static const bool has = __builtin_cpu_supports("avx2") != 0;
-  return has;
-}
 #endif
 
 }  // namespace
 
 void cosSinKernel(std::span<const real> angles, std::span<Vector2> out) {
-#if defined(THYRIX_COSSIN_AVX2)
-  if (hasAvx2()) {
+#if defined(THYRIX_AVX2_DISPATCH)
+  if (processorHasAvx2()) {
     kernelLoopAvx2(angles, out);
     return;
   }

@@ -1,0 +1,24 @@
+#pragma once
+/// @file ProcessorFeatures.h
+/// @brief Which optional instruction sets the processor runs, for the few loops that have a
+/// copy compiled for them and choose it at run time.
+
+/// Defined where a function can be compiled for AVX2 (`[[gnu::target("avx2")]]`) and chosen
+/// at run time by processorHasAvx2(): GCC or Clang on x86-64. Elsewhere the portable loops run.
+#if defined(__GNUC__) && defined(__x86_64__)
+#define THYRIX_AVX2_DISPATCH 1
+#endif
+
+namespace thyrix {
+
+#if defined(THYRIX_AVX2_DISPATCH)
+/// Whether the processor runs AVX2, asked once (a thread-safe local static). A loop's AVX2
+/// copy must do the same operations in each lane as its portable loop, and AVX2 brings no
+/// fused multiply-add (that is FMA's): which copy runs then never changes a result.
+inline bool processorHasAvx2() {
+  static const bool has = __builtin_cpu_supports("avx2") != 0;
+  return has;
+}
+#endif
+
+}  // namespace thyrix
