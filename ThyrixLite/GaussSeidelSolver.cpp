@@ -2,8 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <type_traits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 // Unrolling a loop by two, where the compiler takes the request (GCC and Clang); others
 // (MSVC would warn about an unknown pragma) unroll as they see fit.
@@ -274,6 +279,30 @@ inline Vector2& at(Vector2* velocity, std::uint32_t offset) {
 /// The angular velocity in @p omega of the body at byte offset @p offset of the velocities.
 inline real& omegaAt(real* omega, std::uint32_t offset) { return omega[offset / sizeof(Vector2)]; }
 
+/// `scaledNormal . (vB - vA)`, the row's normal velocity times relaxation / A_kk. In double,
+/// with SSE2, the difference and the products each in one instruction (a sweep is bound by
+/// its instructions): the same operations on the same values, the x product added first, so
+/// the same bits as Vector2's dot(). @p scaledNormal is 16-byte aligned in double (a row's,
+/// see sweep()): its load is then the multiplication's operand. A template, so that a float
+/// build never instantiates it.
+template <class Real>
+inline Real scaledNormalVelocity(const Vector2& scaledNormal, const Vector2& vA,
+                                 const Vector2& vB) {
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<Real, double>) {
+    static_assert(std::is_standard_layout_v<Vector2> && sizeof(Vector2) == 2 * sizeof(Real),
+                  "SSE2 reads a Vector2 as its two coordinates, x first");
+    const auto load = [](const Vector2& v) {
+      return _mm_loadu_pd(reinterpret_cast<const Real*>(&v));
+    };
+    const __m128d normal = _mm_load_pd(reinterpret_cast<const Real*>(&scaledNormal));
+    const __m128d products = _mm_mul_pd(normal, _mm_sub_pd(load(vB), load(vA)));
+    return _mm_cvtsd_f64(_mm_add_sd(products, _mm_unpackhi_pd(products, products)));
+  }
+#endif
+  return dot(scaledNormal, vB - vA);
+}
+
 /// Adds to @p velocity and @p omega (the island's) the change @p amount of row @p p's force,
 /// through its bodies at byte offsets `row.a` and `row.b`, its pushes and, in an island that
 /// turns (@p turning), its turns in `turns[p]` (not read otherwise: turning_ is then not
@@ -311,6 +340,9 @@ real GaussSeidelSolver::sweep() {
   real* const omega = omegas_.data();
   real* const forces = forces_.data();
   real* const changes = changes_.data();
+  static_assert(
+      sizeof(real) != 8 || (alignof(Row) % 16 == 0 && offsetof(Row, scaledNormal) % 16 == 0),
+      "scaledNormalVelocity() loads a row's scaled normal as an aligned pair");
   // Two rows an iteration: half the loop overhead (the rows still go one after the other).
   THYRIX_UNROLL_TWO
   for (std::size_t i = 0; i < n; ++i) {
@@ -322,7 +354,8 @@ real GaussSeidelSolver::sweep() {
     const real force = forces[p];
     const real start = force + scaledTarget;
     // The normal velocity w times relaxation / A_kk, a force.
-    real scaledVelocity = dot(row.scaledNormal, at(velocity, b) - at(velocity, a));
+    real scaledVelocity =
+        scaledNormalVelocity<real>(row.scaledNormal, at(velocity, a), at(velocity, b));
     if constexpr (turning)
       scaledVelocity +=
           turns[p].scaledArmB * omegaAt(omega, b) - turns[p].scaledArmA * omegaAt(omega, a);
