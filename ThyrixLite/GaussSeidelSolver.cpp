@@ -1,4 +1,5 @@
 #include <ThyrixLite/GaussSeidelSolver.h>
+#include <Tools/ProcessorFeatures.h>
 
 #include <algorithm>
 #include <cmath>
@@ -400,8 +401,7 @@ THYRIX_ALWAYS_INLINE void conjugateRows(std::size_t n, real beta, const Row* row
   }
 }
 
-#if defined(__GNUC__) && defined(__x86_64__)
-#define THYRIX_SOLVER_AVX 1
+#if defined(THYRIX_AVX_DISPATCH)
 // The same loops compiled for AVX, chosen at run time: its three-operand instructions need
 // none of the register copies SSE2's two-operand ones take (a sweep is bound by its
 // instructions: 34 a row in SSE2, 29 in AVX). The same operations in the same order, and AVX
@@ -418,20 +418,14 @@ template <bool turning, class Row, class Turning>
                                              real* forces, real* direction, const real* changes) {
   conjugateRows<turning>(n, beta, rows, turns, velocity, omega, forces, direction, changes);
 }
-
-/// Whether the processor runs AVX, asked once.
-bool hasAvx() {
-  static const bool has = __builtin_cpu_supports("avx") != 0;
-  return has;
-}
 #endif
 
 }  // namespace
 
 template <bool backward, bool turning>
 real GaussSeidelSolver::sweep() {
-#if defined(THYRIX_SOLVER_AVX)
-  if (hasAvx())
+#if defined(THYRIX_AVX_DISPATCH)
+  if (processorHasAvx())
     return sweepRowsAvx<backward, turning>(rows_.size(), rows_.data(), turning_.data(),
                                            velocities_.data(), omegas_.data(), forces_.data(),
                                            changes_.data());
@@ -443,8 +437,8 @@ real GaussSeidelSolver::sweep() {
 
 template <bool turning>
 void GaussSeidelSolver::conjugateStep(real beta) {
-#if defined(THYRIX_SOLVER_AVX)
-  if (hasAvx()) {
+#if defined(THYRIX_AVX_DISPATCH)
+  if (processorHasAvx()) {
     conjugateRowsAvx<turning>(rows_.size(), beta, rows_.data(), turning_.data(), velocities_.data(),
                               omegas_.data(), forces_.data(), direction_.data(), changes_.data());
     return;

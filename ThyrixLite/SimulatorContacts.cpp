@@ -12,7 +12,7 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
-#if defined(THYRIX_AVX2_DISPATCH)
+#if defined(THYRIX_AVX_DISPATCH)
 #include <immintrin.h>
 #endif
 
@@ -224,7 +224,7 @@ void reachFullWord(const BorderLine* lines, const BoundingBox* boxes, std::uint6
 }
 #endif
 
-#if defined(THYRIX_AVX2_DISPATCH)
+#if defined(THYRIX_AVX_DISPATCH)
 /// reachFullWord four boxes at a time (one box per lane), for a processor with AVX2: the same
 /// operations in the same order in each lane, and AVX2 brings no fused multiply-add (that is
 /// FMA's), so the same bits. (Double only.)
@@ -292,7 +292,7 @@ void reachWord(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t 
   if (retest == ~std::uint64_t{0}) {
 #if defined(__SSE2__)
     if constexpr (std::is_same_v<real, double>) {
-#if defined(THYRIX_AVX2_DISPATCH)
+#if defined(THYRIX_AVX_DISPATCH)
       if (processorHasAvx2()) {
         reachFullWordAvx2<Borders>(lines, boxes, reach);
         return;

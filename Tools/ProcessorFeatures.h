@@ -3,15 +3,23 @@
 /// @brief Which optional instruction sets the processor runs, for the few loops that have a
 /// copy compiled for them and choose it at run time.
 
-/// Defined where a function can be compiled for AVX2 (`[[gnu::target("avx2")]]`) and chosen
-/// at run time by processorHasAvx2(): GCC or Clang on x86-64. Elsewhere the portable loops run.
+/// Defined where a function can be compiled for AVX or AVX2 (`[[gnu::target("avx")]]`,
+/// `[[gnu::target("avx2")]]`) and chosen at run time by processorHasAvx() or
+/// processorHasAvx2(): GCC or Clang on x86-64. Elsewhere the portable loops run.
 #if defined(__GNUC__) && defined(__x86_64__)
-#define THYRIX_AVX2_DISPATCH 1
+#define THYRIX_AVX_DISPATCH 1
 #endif
 
 namespace thyrix {
 
-#if defined(THYRIX_AVX2_DISPATCH)
+#if defined(THYRIX_AVX_DISPATCH)
+/// Whether the processor runs AVX, asked once (a thread-safe local static). As for
+/// processorHasAvx2(): an AVX copy of a loop does what the portable loop does, so the same bits.
+inline bool processorHasAvx() {
+  static const bool has = __builtin_cpu_supports("avx") != 0;
+  return has;
+}
+
 /// Whether the processor runs AVX2, asked once (a thread-safe local static). A loop's AVX2
 /// copy must do the same operations in each lane as its portable loop, and AVX2 brings no
 /// fused multiply-add (that is FMA's): which copy runs then never changes a result.
