@@ -227,10 +227,31 @@ class Simulator : public World {
   /// updateShape for a circle at centre @p r; @return its travel.
   real updateCircle(std::uint32_t shape, Vector2 r, bool poseKnown, Vector2& boxMin,
                     Vector2& boxMax);
-  /// updateShape for a capsule, @p primitive its primitive (also called by
-  /// updateComposedBody's loop, with the arrays it holds).
+  /// The grid arrays a shape's update writes, and the travel factor: read once by
+  /// updateComposedBody for all its shapes (a byte store, as to shapeMoved_, may alias anything,
+  /// so members would be read again after each).
+  struct GridTargets {
+    const std::uint32_t* slots;  // gridSlot_
+    std::uint64_t* movedBits;    // gridMovedBits_
+    BoundingBox* boxes;          // gridBoxes_
+    real travelFactor;           // geometryTravel_
+  };
+  [[nodiscard]] GridTargets gridTargets() {
+    return {gridSlot_.data(), gridMovedBits_.data(), gridBoxes_.data(), geometryTravel_};
+  }
+  /// updateShape for a capsule, @p primitive its primitive.
   void updateCapsule(std::uint32_t shape, Primitive& primitive, ShapePose& pose,
-                     ShapeGeometry& geometry, bool poseKnown, Vector2& boxMin, Vector2& boxMax);
+                     ShapeGeometry& geometry, bool poseKnown, const GridTargets& grid,
+                     Vector2& boxMin, Vector2& boxMax);
+  /// updateCapsule once the half axis @p axis is known, for the pose (@p r, @p alpha).
+  void placeCapsule(std::uint32_t shape, Vector2 r, real alpha, Vector2 axis, ShapePose& pose,
+                    ShapeGeometry& geometry, bool poseKnown, const GridTargets& grid,
+                    Vector2& boxMin, Vector2& boxMax);
+  /// updateComposedBody's loop body for shape @p shape of @p state's body in general (its
+  /// loop does a chain's links itself); @p anyMoved: a shape before it moved. @return whether
+  /// this shape or one before it moved.
+  bool updateComposedShape(const BodyState& state, std::uint32_t shape, bool changed,
+                           bool poseKnown, bool anyMoved, Vector2& boxMin, Vector2& boxMax);
   void findBorderContacts(bool reuse);
   /// Border @p k's reach bits over @p words words of shapes: every shape's retested if the
   /// border moved, else the moved shapes'.

@@ -139,7 +139,8 @@ inline void Simulator::addCachedBox(std::uint32_t s, Vector2& boxMin, Vector2& b
 // parts of composed bodies alike).
 THYRIX_FORCE_INLINE void Simulator::updateCapsule(std::uint32_t s, Primitive& primitive,
                                                   ShapePose& pose, ShapeGeometry& g, bool poseKnown,
-                                                  Vector2& boxMin, Vector2& boxMax) {
+                                                  const GridTargets& grid, Vector2& boxMin,
+                                                  Vector2& boxMax) {
   const Vector2 r = primitive.r;
   const real alpha = primitive.alpha;
   // The half axis turns with the angle only: a capsule that slides keeps it. Kept in a
@@ -151,12 +152,19 @@ THYRIX_FORCE_INLINE void Simulator::updateCapsule(std::uint32_t s, Primitive& pr
     axis = primitive.direction() * pose.halfLength;
     pose.axis = axis;
   }
-  const std::uint32_t slot = gridSlot_[s];
-  gridMovedBits_[slot / 64] |= std::uint64_t{1} << (slot % 64);
+  placeCapsule(s, r, alpha, axis, pose, g, poseKnown, grid, boxMin, boxMax);
+}
+
+THYRIX_FORCE_INLINE void Simulator::placeCapsule(std::uint32_t s, Vector2 r, real alpha,
+                                                 Vector2 axis, ShapePose& pose, ShapeGeometry& g,
+                                                 bool poseKnown, const GridTargets& grid,
+                                                 Vector2& boxMin, Vector2& boxMax) {
+  const std::uint32_t slot = grid.slots[s];
+  grid.movedBits[slot / 64] |= std::uint64_t{1} << (slot % 64);
   pose.r = r;
   pose.alpha = alpha;
-  capsuleGeometry<real>(r, axis, g.p0, g.p1, g.radius, g.margin, g.travel, geometryTravel_,
-                        poseKnown, gridBoxes_[slot], boxMin, boxMax);
+  capsuleGeometry<real>(r, axis, g.p0, g.p1, g.radius, g.margin, g.travel, grid.travelFactor,
+                        poseKnown, grid.boxes[slot], boxMin, boxMax);
 }
 
 // A circle: its geometry does not depend on its angle. Its axis is its centre twice, so that
@@ -210,7 +218,7 @@ THYRIX_FORCE_INLINE void Simulator::updateShape(std::uint32_t s, bool poseKnown,
       pose.alpha = alpha;
       return;
     case ShapeType::Capsule:
-      updateCapsule(s, primitive, pose, g, poseKnown, boxMin, boxMax);
+      updateCapsule(s, primitive, pose, g, poseKnown, gridTargets(), boxMin, boxMax);
       return;
     case ShapeType::Circle:
       break;
@@ -296,9 +304,35 @@ THYRIX_FORCE_INLINE void Simulator::updateMovedCircle(BodyState& state, bool cha
   state.restsCheaply = travel == 0;
 }
 
+// Out of line (the general case of updateComposedBody's loop): its calls (a sensor noted, a
+// part placed, a sine and a cosine) then leave the loop's registers alone.
+THYRIX_NO_INLINE bool Simulator::updateComposedShape(const BodyState& state, std::uint32_t s,
+                                                     bool changed, bool poseKnown, bool anyMoved,
+                                                     Vector2& boxMin, Vector2& boxMax) {
+  Primitive& primitive = *shapes_[s].primitive;
+  if (primitive.sensing_) sensingPrimitives_.push_back(&primitive);
+  ShapePose& pose = shapePoses_[s];
+  ShapeGeometry& g = geometry_[s];
+  const bool moved = changed || !sameBits(primitive.r, pose.r) ||
+                     !sameBits(primitive.alpha, pose.alpha) || g.travel != 0;
+  if (!moved) {  // (its shapeMoved_ entry is 0 since the start of the detection)
+    if (anyMoved) addCachedBox(s, boxMin, boxMax);
+    return anyMoved;
+  }
+  shapeMoved_[s] = 1;
+  if (!anyMoved)
+    for (std::uint32_t t = state.firstShape; t < s; ++t) addCachedBox(t, boxMin, boxMax);
+  // (Tested here first: a part its owner places, an articulated link, is where it is.)
+  if (primitive.rigidlyAttached()) primitive.followOwner();
+  if (shapes_[s].type == ShapeType::Capsule)
+    updateCapsule(s, primitive, pose, g, poseKnown, gridTargets(), boxMin, boxMax);
+  else  // a circle (or a border)
+    updateShape(s, poseKnown, false, boxMin, boxMax);
+  return true;
+}
+
 // Out of line: the loop over a composed body's shapes (a chain's 1000 links) gets the
-// registers to itself, with the arrays' addresses loaded once (measured: inlined, it reloaded
-// them after every store of a flag and spilled the body box).
+// registers to itself: the arrays' addresses loaded once, the body box kept in registers.
 THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool changed,
                                                     bool known) {
   // Known or not, the same for every shape: the loop in two copies, each with its own
@@ -309,34 +343,47 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
     ShapePose* const poses = shapePoses_.data();
     ShapeGeometry* const geometry = geometry_.data();
     std::uint8_t* const shapeMoved = shapeMoved_.data();
+    const GridTargets grid = gridTargets();
     Vector2 boxMin{realMax, realMax};
     Vector2 boxMax{-realMax, -realMax};
     // Once a shape has moved the body box is rebuilt, from every shape in order: those
     // before the first moved one are added then, the unmoved ones after it as they come.
     // A body none of whose shapes moved keeps its box and reads no shape's geometry.
     bool anyMoved = changed;
-    const std::uint32_t end = state.firstShape + state.shapeCount;
-    for (std::uint32_t s = state.firstShape; s < end; ++s) {
-      Primitive& primitive = *shapes[s].primitive;
-      if (primitive.sensing_) sensingPrimitives_.push_back(&primitive);
+    // A chain's link, after the first: a capsule without sensors, placed by its owner, that
+    // moved, after a shape that moved, its half axis at hand (the pose's, or the direction
+    // cached by the primitive: no sine or cosine). Done here as updateComposedShape does it;
+    // false, nothing written, for every other shape.
+    const auto updateLink = [&](std::uint32_t s) {
+      const Primitive& primitive = *shapes[s].primitive;
+      if (!anyMoved || shapes[s].type != ShapeType::Capsule || primitive.sensing_ ||
+          primitive.rigid_)
+        return false;
       ShapePose& pose = poses[s];
       ShapeGeometry& g = geometry[s];
-      const bool moved = changed || !sameBits(primitive.r, pose.r) ||
-                         !sameBits(primitive.alpha, pose.alpha) || g.travel != 0;
-      if (!moved) {  // (its shapeMoved_ entry is 0 since the start of the detection)
-        if (anyMoved) addCachedBox(s, boxMin, boxMax);
-        continue;
+      const Vector2 r = primitive.r;
+      const real alpha = primitive.alpha;
+      const bool turned = !sameBits(alpha, pose.alpha);
+      if (!changed && sameBits(r, pose.r) && !turned && g.travel == 0) return false;  // unmoved
+      Vector2 axis = pose.axis;
+      if (!poseKnown || turned) {
+        if (alpha != primitive.directionAngle_) return false;  // direction() would compute it
+        axis = primitive.direction_ * pose.halfLength;
+        pose.axis = axis;
       }
-      shapeMoved[s] = 1;
-      if (!anyMoved)
-        for (std::uint32_t t = state.firstShape; t < s; ++t) addCachedBox(t, boxMin, boxMax);
-      anyMoved = true;
-      // (Tested here first: a part its owner places, an articulated link, is where it is.)
-      if (primitive.rigidlyAttached()) primitive.followOwner();
-      if (shapes[s].type == ShapeType::Capsule)  // (a chain's links: inline, its common case)
-        updateCapsule(s, primitive, pose, g, poseKnown, boxMin, boxMax);
-      else  // a circle (or a border)
-        updateShape(s, poseKnown, false, boxMin, boxMax);
+      placeCapsule(s, r, alpha, axis, pose, g, poseKnown, grid, boxMin, boxMax);
+      shapeMoved[s] = 1;  // (last: a byte store, which the compiler cannot tell from the rest)
+      return true;
+    };
+    const std::uint32_t end = state.firstShape + state.shapeCount;
+    for (std::uint32_t s = state.firstShape; s < end; ++s) {
+      if (updateLink(s)) [[likely]]
+        continue;
+      Vector2 lower = boxMin;  // (the box stays a local: it leaves registers only here)
+      Vector2 upper = boxMax;
+      anyMoved = updateComposedShape(state, s, changed, poseKnown, anyMoved, lower, upper);
+      boxMin = lower;
+      boxMax = upper;
     }
     if (!anyMoved) return;
     state.object->boxMin = boxMin;
