@@ -96,14 +96,19 @@ class Primitive : public PhysicalObject {
  private:
   friend class Simulator;  // clears and finishes the sensors around each solve
 
-  // First, next to each other: what the simulator reads from every part of a composed body
-  // in every step (a chain's 1000 links are 1000 objects apart in memory: fewer cache lines
-  // per object, measured faster). The sensors are read only when sensing_ says so.
-  PhysicalObject* owner_ = this;
-  bool rigid_ = true;
-  ShapeType shapeType_;
+  // First, next to each other: what every step writes and reads of an articulated link
+  // besides its pose (place(), then the simulator's direction() and rigidlyAttached()), in 26
+  // bytes at the same place in a cache line as `r` to `sensing_` (the object's 16th to 42nd
+  // bytes, 3 lines before): both in one line each unless the object starts in the second half
+  // of a line (a chain's 1000 links are objects apart in memory: measured faster). Then what
+  // followOwner() reads. The sensors are read only when sensing_ says so.
   Vector2 direction_{1, 0};  // (cos, sin) of directionAngle_
   real directionAngle_ = 0;
+  bool rigid_ = true;
+  ShapeType shapeType_;
+  PhysicalObject* owner_ = this;
+  Vector2 localPosition_;
+  real localAngle_ = 0;
 
  protected:
   /// Gives the primitive @p sensors (the shape classes set them up; none by default).
@@ -116,8 +121,6 @@ class Primitive : public PhysicalObject {
   TactileSensors tactile_;
   real radius_;
   real halfLength_;
-  Vector2 localPosition_;
-  real localAngle_ = 0;
 };
 
 }  // namespace thyrix
