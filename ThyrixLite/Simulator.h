@@ -222,6 +222,8 @@ class Simulator : public World {
   /// detected before, as of the start of updateBody).
   void updateComposedBody(const BodyState& state, bool changed, bool known);
   void addCachedBox(std::uint32_t shape, Vector2& boxMin, Vector2& boxMax) const;
+  /// addCachedBox for a circle or capsule of geometry @p geometry.
+  static void addGeometryBox(const ShapeGeometry& geometry, Vector2& boxMin, Vector2& boxMax);
   void updateShape(std::uint32_t shape, bool poseKnown, bool standalone, Vector2& boxMin,
                    Vector2& boxMax);
   /// updateShape for a circle at centre @p r; @return its travel.
@@ -247,11 +249,10 @@ class Simulator : public World {
   void placeCapsule(std::uint32_t shape, Vector2 r, real alpha, Vector2 axis, ShapePose& pose,
                     ShapeGeometry& geometry, bool poseKnown, const GridTargets& grid,
                     Vector2& boxMin, Vector2& boxMax);
-  /// updateComposedBody's loop body for shape @p shape of @p state's body in general (its
-  /// loop does a chain's links itself); @p anyMoved: a shape before it moved. @return whether
-  /// this shape or one before it moved.
-  bool updateComposedShape(const BodyState& state, std::uint32_t shape, bool changed,
-                           bool poseKnown, bool anyMoved, Vector2& boxMin, Vector2& boxMax);
+  /// updateComposedBody's loop body for shape @p shape, once a shape of its body moved, in
+  /// general (the loop does a chain's links and the unmoved shapes itself).
+  void updateComposedShape(std::uint32_t shape, bool changed, bool poseKnown, Vector2& boxMin,
+                           Vector2& boxMax);
   void findBorderContacts(bool reuse);
   /// Border @p k's reach bits over @p words words of shapes: every shape's retested if the
   /// border moved, else the moved shapes'.

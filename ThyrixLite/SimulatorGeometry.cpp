@@ -47,6 +47,29 @@ void storePair(Vector2& v, __m128d pair) {
 }
 #endif
 
+/// Widens the box (@p boxMin, @p boxMax) by the box of the capsule of ends @p p0 and @p p1 and
+/// radius @p radius. In double, with SSE2, as capsuleGeometry does it (updateComposedBody then
+/// keeps the box in registers: mixed with scalar updates, it was kept in memory).
+template <class Real>
+inline void includeCapsuleBox(const Vector2& p0, const Vector2& p1, Real radius, Vector2& boxMin,
+                              Vector2& boxMax) {
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<Real, double>) {
+    const __m128d end0 = loadPair<Real>(p0);
+    const __m128d end1 = loadPair<Real>(p1);
+    const __m128d round = _mm_set1_pd(radius);
+    const __m128d least = _mm_min_pd(end1, end0);
+    const __m128d most = _mm_max_pd(end1, end0);
+    storePair<Real>(boxMin, _mm_min_pd(_mm_sub_pd(least, round), loadPair<Real>(boxMin)));
+    storePair<Real>(boxMax, _mm_max_pd(_mm_add_pd(most, round), loadPair<Real>(boxMax)));
+    return;
+  }
+#endif
+  const Vector2 round{radius, radius};
+  include(boxMin, boxMax, Vector2{std::min(p0.x, p1.x), std::min(p0.y, p1.y)} - round,
+          Vector2{std::max(p0.x, p1.x), std::max(p0.y, p1.y)} + round);
+}
+
 /// A capsule's geometry from its centre @p r and half axis @p axis, exactly as
 /// Simulator::updateShape computes it: its ends @p p0 and @p p1 and its @p travel (from the
 /// ends' last values when @p known), its grid box @p gridBox (widened by @p radius, @p margin
@@ -118,11 +141,12 @@ inline void capsuleGeometry(Vector2 r, Vector2 axis, Vector2& p0, Vector2& p1, R
 // body some of whose shapes moved (their geometry is as updateShape left it).
 inline void Simulator::addCachedBox(std::uint32_t s, Vector2& boxMin, Vector2& boxMax) const {
   if (shapes_[s].type == ShapeType::HalfPlane) return;  // unbounded: no box
+  addGeometryBox(geometry_[s], boxMin, boxMax);
+}
+
+inline void Simulator::addGeometryBox(const ShapeGeometry& g, Vector2& boxMin, Vector2& boxMax) {
   // A circle's axis is its centre twice (see updateShape): the capsule's box is its box.
-  const ShapeGeometry& g = geometry_[s];
-  const Vector2 radius{g.radius, g.radius};
-  include(boxMin, boxMax, Vector2{std::min(g.p0.x, g.p1.x), std::min(g.p0.y, g.p1.y)} - radius,
-          Vector2{std::max(g.p0.x, g.p1.x), std::max(g.p0.y, g.p1.y)} + radius);
+  includeCapsuleBox<real>(g.p0, g.p1, g.radius, boxMin, boxMax);
 }
 
 // Forced inlining where GCC kept a call (measured), and an out-of-line loop (below).
@@ -304,10 +328,9 @@ THYRIX_FORCE_INLINE void Simulator::updateMovedCircle(BodyState& state, bool cha
   state.restsCheaply = travel == 0;
 }
 
-// Out of line (the general case of updateComposedBody's loop): its calls (a sensor noted, a
-// part placed, a sine and a cosine) then leave the loop's registers alone.
-THYRIX_NO_INLINE bool Simulator::updateComposedShape(const BodyState& state, std::uint32_t s,
-                                                     bool changed, bool poseKnown, bool anyMoved,
+// Out of line (the general case of updateComposedBody's second loop): its calls (a sensor
+// noted, a part placed, a sine and a cosine) then leave the loop's registers alone.
+THYRIX_NO_INLINE void Simulator::updateComposedShape(std::uint32_t s, bool changed, bool poseKnown,
                                                      Vector2& boxMin, Vector2& boxMax) {
   Primitive& primitive = *shapes_[s].primitive;
   if (primitive.sensing_) sensingPrimitives_.push_back(&primitive);
@@ -316,48 +339,58 @@ THYRIX_NO_INLINE bool Simulator::updateComposedShape(const BodyState& state, std
   const bool moved = changed || !sameBits(primitive.r, pose.r) ||
                      !sameBits(primitive.alpha, pose.alpha) || g.travel != 0;
   if (!moved) {  // (its shapeMoved_ entry is 0 since the start of the detection)
-    if (anyMoved) addCachedBox(s, boxMin, boxMax);
-    return anyMoved;
+    addCachedBox(s, boxMin, boxMax);
+    return;
   }
   shapeMoved_[s] = 1;
-  if (!anyMoved)
-    for (std::uint32_t t = state.firstShape; t < s; ++t) addCachedBox(t, boxMin, boxMax);
   // (Tested here first: a part its owner places, an articulated link, is where it is.)
   if (primitive.rigidlyAttached()) primitive.followOwner();
   if (shapes_[s].type == ShapeType::Capsule)
     updateCapsule(s, primitive, pose, g, poseKnown, gridTargets(), boxMin, boxMax);
   else  // a circle (or a border)
     updateShape(s, poseKnown, false, boxMin, boxMax);
-  return true;
 }
 
-// Out of line: the loop over a composed body's shapes (a chain's 1000 links) gets the
-// registers to itself: the arrays' addresses loaded once, the body box kept in registers.
+// Out of line: the loops over a composed body's shapes (a chain's 1000 links) get the
+// registers to themselves: the arrays' addresses loaded once, the body box kept in registers.
 THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool changed,
                                                     bool known) {
-  // Known or not, the same for every shape: the loop in two copies, each with its own
-  // constant (measured: a flag read from the stack twice a shape otherwise).
+  const Shape* const shapes = shapes_.data();
+  ShapePose* const poses = shapePoses_.data();
+  ShapeGeometry* const geometry = geometry_.data();
+  // The shapes up to the first that moved: their sensors noted, nothing else (a body none of
+  // whose shapes moved keeps its box and reads no shape's box).
+  const std::uint32_t end = state.firstShape + state.shapeCount;
+  std::uint32_t firstMoved = state.firstShape;
+  if (!changed) {
+    for (; firstMoved < end; ++firstMoved) {
+      Primitive& primitive = *shapes[firstMoved].primitive;
+      const ShapePose& pose = poses[firstMoved];
+      if (!sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha) ||
+          geometry[firstMoved].travel != 0)
+        break;
+      if (primitive.sensing_) sensingPrimitives_.push_back(&primitive);
+    }
+    if (firstMoved == end) return;
+  }
+  // From the first moved shape on, the body box is rebuilt, from every shape in order: those
+  // before it are added first, the unmoved ones after it as they come. Known or not, the same
+  // for every shape: the loop in two copies, each with its own constant (measured: a flag read
+  // from the stack twice a shape otherwise).
   const auto run = [&](auto knownConstant) {
     constexpr bool poseKnown = decltype(knownConstant)::value;
-    const Shape* const shapes = shapes_.data();
-    ShapePose* const poses = shapePoses_.data();
-    ShapeGeometry* const geometry = geometry_.data();
     std::uint8_t* const shapeMoved = shapeMoved_.data();
     const GridTargets grid = gridTargets();
     Vector2 boxMin{realMax, realMax};
     Vector2 boxMax{-realMax, -realMax};
-    // Once a shape has moved the body box is rebuilt, from every shape in order: those
-    // before the first moved one are added then, the unmoved ones after it as they come.
-    // A body none of whose shapes moved keeps its box and reads no shape's geometry.
-    bool anyMoved = changed;
-    // A chain's link, after the first: a capsule without sensors, placed by its owner, that
-    // moved, after a shape that moved, its half axis at hand (the pose's, or the direction
-    // cached by the primitive: no sine or cosine). Done here as updateComposedShape does it;
-    // false, nothing written, for every other shape.
+    for (std::uint32_t t = state.firstShape; t < firstMoved; ++t)
+      if (shapes[t].type != ShapeType::HalfPlane) addGeometryBox(geometry[t], boxMin, boxMax);
+    // A chain's link: a capsule without sensors, placed by its owner, that moved, its half
+    // axis at hand (the pose's, or the direction cached by the primitive: no sine or cosine).
+    // Done here as updateComposedShape does it; false, nothing written, for every other shape.
     const auto updateLink = [&](std::uint32_t s) {
       const Primitive& primitive = *shapes[s].primitive;
-      if (!anyMoved || shapes[s].type != ShapeType::Capsule || primitive.sensing_ ||
-          primitive.rigid_)
+      if (shapes[s].type != ShapeType::Capsule || primitive.sensing_ || primitive.rigid_)
         return false;
       ShapePose& pose = poses[s];
       ShapeGeometry& g = geometry[s];
@@ -375,17 +408,26 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
       shapeMoved[s] = 1;  // (last: a byte store, which the compiler cannot tell from the rest)
       return true;
     };
-    const std::uint32_t end = state.firstShape + state.shapeCount;
-    for (std::uint32_t s = state.firstShape; s < end; ++s) {
-      if (updateLink(s)) [[likely]]
+    // A circle or capsule without sensors that did not move: its box as cached.
+    const auto addUnmoved = [&](std::uint32_t s) {
+      const Primitive& primitive = *shapes[s].primitive;
+      const ShapePose& pose = poses[s];
+      const ShapeGeometry& g = geometry[s];
+      if (changed || primitive.sensing_ || shapes[s].type == ShapeType::HalfPlane ||
+          !sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha) || g.travel != 0)
+        return false;
+      addGeometryBox(g, boxMin, boxMax);
+      return true;
+    };
+    for (std::uint32_t s = firstMoved; s < end; ++s) {
+      if (updateLink(s) || addUnmoved(s)) [[likely]]
         continue;
       Vector2 lower = boxMin;  // (the box stays a local: it leaves registers only here)
       Vector2 upper = boxMax;
-      anyMoved = updateComposedShape(state, s, changed, poseKnown, anyMoved, lower, upper);
+      updateComposedShape(s, changed, poseKnown, lower, upper);
       boxMin = lower;
       boxMax = upper;
     }
-    if (!anyMoved) return;
     state.object->boxMin = boxMin;
     state.object->boxMax = boxMax;
   };
