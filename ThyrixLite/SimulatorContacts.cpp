@@ -3,7 +3,6 @@
 /// geometry is in SimulatorGeometry.cpp).
 #include <ThyrixLite/NarrowPhase.h>
 #include <ThyrixLite/Simulator.h>
-#include <Tools/ProcessorFeatures.h>
 
 #include <algorithm>
 #include <bit>
@@ -11,9 +10,6 @@
 #include <type_traits>
 #if defined(__SSE2__)
 #include <emmintrin.h>
-#endif
-#if defined(THYRIX_AVX_DISPATCH)
-#include <immintrin.h>
 #endif
 
 namespace thyrix {
@@ -224,61 +220,10 @@ void reachFullWord(const BorderLine* lines, const BoundingBox* boxes, std::uint6
 }
 #endif
 
-#if defined(THYRIX_AVX_DISPATCH)
-/// reachFullWord four boxes at a time (one box per lane), for a processor with AVX2: the same
-/// operations in the same order in each lane, and AVX2 brings no fused multiply-add (that is
-/// FMA's), so the same bits. (Double only.)
-template <std::size_t Borders>
-[[gnu::target("avx2")]] void reachFullWordAvx2(const BorderLine* lines, const BoundingBox* boxes,
-                                               std::uint64_t* reach) {
-  static_assert(std::is_standard_layout_v<BoundingBox> && sizeof(BoundingBox) == 4 * sizeof(real),
-                "the boxes are read as arrays of four coordinates");
-  const auto* const corners = reinterpret_cast<const double*>(boxes);  // lower x, y, upper x, y
-  const __m256d half = _mm256_set1_pd(0.5);
-  const __m256d zero = _mm256_setzero_pd();
-  std::uint64_t bits[Borders] = {};
-  for (std::size_t j = 0; j < 64; j += 4) {
-    const double* const a = corners + 4 * j;
-    // Boxes j to j + 3, one a register, turned into one coordinate a register.
-    const __m256d box0 = _mm256_loadu_pd(a);
-    const __m256d box1 = _mm256_loadu_pd(a + 4);
-    const __m256d box2 = _mm256_loadu_pd(a + 8);
-    const __m256d box3 = _mm256_loadu_pd(a + 12);
-    const __m256d xs01 = _mm256_unpacklo_pd(box0, box1);  // lower x 0, 1, upper x 0, 1
-    const __m256d ys01 = _mm256_unpackhi_pd(box0, box1);
-    const __m256d xs23 = _mm256_unpacklo_pd(box2, box3);
-    const __m256d ys23 = _mm256_unpackhi_pd(box2, box3);
-    const __m256d lowerX = _mm256_permute2f128_pd(xs01, xs23, 0x20);
-    const __m256d upperX = _mm256_permute2f128_pd(xs01, xs23, 0x31);
-    const __m256d lowerY = _mm256_permute2f128_pd(ys01, ys23, 0x20);
-    const __m256d upperY = _mm256_permute2f128_pd(ys01, ys23, 0x31);
-    const __m256d centreX = _mm256_mul_pd(_mm256_add_pd(lowerX, upperX), half);
-    const __m256d centreY = _mm256_mul_pd(_mm256_add_pd(lowerY, upperY), half);
-    const __m256d halfX = _mm256_mul_pd(_mm256_sub_pd(upperX, lowerX), half);
-    const __m256d halfY = _mm256_mul_pd(_mm256_sub_pd(upperY, lowerY), half);
-    for (std::size_t k = 0; k < Borders; ++k) {
-      const BorderLine& line = lines[k];
-      const __m256d along =
-          _mm256_add_pd(_mm256_mul_pd(_mm256_sub_pd(centreX, _mm256_set1_pd(line.point.x)),
-                                      _mm256_set1_pd(line.normal.x)),
-                        _mm256_mul_pd(_mm256_sub_pd(centreY, _mm256_set1_pd(line.point.y)),
-                                      _mm256_set1_pd(line.normal.y)));
-      const __m256d extent = _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(line.absNormal.x), halfX),
-                                           _mm256_mul_pd(_mm256_set1_pd(line.absNormal.y), halfY));
-      const auto hit = static_cast<std::uint64_t>(
-          _mm256_movemask_pd(_mm256_cmp_pd(_mm256_sub_pd(along, extent), zero, _CMP_LE_OQ)));
-      bits[k] |= hit << j;
-    }
-  }
-  for (std::size_t k = 0; k < Borders; ++k) reach[k] |= bits[k];
-}
-#endif
-
 /// Sets in @p reach (one word per border of @p lines) the bits of @p retest whose boxes (from
 /// @p boxes, the word's first) reach behind each border. A whole word of moved shapes (a crowd
-/// in motion) is tested without the walk over its bits, in double four boxes at a time where
-/// the processor has AVX2 (reachFullWordAvx2), else two with SSE2 (reachFullWord); otherwise a
-/// plain loop over its 64 boxes.
+/// in motion) is tested without the walk over its bits, in double two boxes at a time with SSE2
+/// (reachFullWord); otherwise a plain loop over its 64 boxes.
 template <std::size_t Borders>
 void reachWord(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t retest,
                std::uint64_t* reach) {
@@ -292,12 +237,6 @@ void reachWord(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t 
   if (retest == ~std::uint64_t{0}) {
 #if defined(__SSE2__)
     if constexpr (std::is_same_v<real, double>) {
-#if defined(THYRIX_AVX_DISPATCH)
-      if (processorHasAvx2()) {
-        reachFullWordAvx2<Borders>(lines, boxes, reach);
-        return;
-      }
-#endif
       reachFullWord<Borders>(lines, boxes, reach);
       return;
     }
