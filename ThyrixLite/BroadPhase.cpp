@@ -115,10 +115,12 @@ Vector2 centreInCells(const BoundingBox& box, Real cellSize) {
 
 /// Adds every box of @p boxes, in index order, to @p extents (the sweep's) and to the sum
 /// @p extentSum and the largest @p maxExtent of their extents (the grid's, see extent()).
-/// A template: a float build never instantiates the double branch.
-template <class Real>
-void gatherExtents(std::span<const BoundingBox> boxes, SweepAndPrune::Extents& extents,
-                   Real& extentSum, Real& maxExtent) {
+/// With Within, also whether every box lies within its box of @p fat (the same index; false
+/// for a NaN corner), else true. A template: a float build never instantiates the double
+/// branch.
+template <bool Within, class Real>
+bool gatherExtents(std::span<const BoundingBox> boxes, const BoundingBox* fat,
+                   SweepAndPrune::Extents& extents, Real& extentSum, Real& maxExtent) {
 #if defined(__SSE2__)
   if constexpr (std::is_same_v<Real, double>) {
     // A box's x and y in the two halves of a register (a pile's boxes in every step): the
@@ -132,10 +134,17 @@ void gatherExtents(std::span<const BoundingBox> boxes, SweepAndPrune::Extents& e
     __m128d high = _mm_set_pd(extents.highY, extents.highX);
     __m128d sum = _mm_set_sd(extentSum);
     __m128d most = _mm_set_sd(maxExtent);
+    __m128d within = _mm_castsi128_pd(_mm_set1_epi32(-1));
+    const auto* fatCorners = reinterpret_cast<const Real*>(fat);
     for (const BoundingBox& box : boxes) {
       const auto* const corners = reinterpret_cast<const Real*>(&box);
       const __m128d lower = _mm_loadu_pd(corners);
       const __m128d upper = _mm_loadu_pd(corners + 2);
+      if constexpr (Within) {
+        within = _mm_and_pd(within, _mm_and_pd(_mm_cmpge_pd(lower, _mm_loadu_pd(fatCorners)),
+                                               _mm_cmple_pd(upper, _mm_loadu_pd(fatCorners + 2))));
+        fatCorners += 4;
+      }
       const __m128d sides = _mm_sub_pd(upper, lower);
       sums = _mm_add_pd(sums, sides);
       low = _mm_min_pd(lower, low);
@@ -152,20 +161,44 @@ void gatherExtents(std::span<const BoundingBox> boxes, SweepAndPrune::Extents& e
     extents.highY = _mm_cvtsd_f64(_mm_unpackhi_pd(high, high));
     extentSum = _mm_cvtsd_f64(sum);
     maxExtent = _mm_cvtsd_f64(most);
-    return;
+    return _mm_movemask_pd(within) == 3;
   }
 #endif
+  bool within = true;
   for (const BoundingBox& box : boxes) {
     extents.add(box);
     extentSum += extent(box);
     maxExtent = std::max(maxExtent, extent(box));
+    if constexpr (Within) {
+      within &= (box.lower.x >= fat->lower.x) & (box.lower.y >= fat->lower.y) &
+                (box.upper.x <= fat->upper.x) & (box.upper.y <= fat->upper.y);
+      ++fat;
+    }
   }
+  return within;
+}
+
+/// Whether every box of @p boxes lies within its box of @p fat (false for a NaN corner).
+bool allWithin(std::span<const BoundingBox> boxes, const BoundingBox* fat) {
+  bool within = true;
+  for (const BoundingBox& box : boxes) {
+    within &= (box.lower.x >= fat->lower.x) & (box.lower.y >= fat->lower.y) &
+              (box.upper.x <= fat->upper.x) & (box.upper.y <= fat->upper.y);
+    ++fat;
+  }
+  return within;
 }
 
 }  // namespace
 
 void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
-  findPairs(boxes, {}, pairs);
+  pairs.clear();
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  if (count <= smallCount) {
+    findPairsAmongFew(boxes, 0, false, pairs);
+    return;
+  }
+  findPairsAmongMany(boxes, false, pairs);
 }
 
 void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const std::uint64_t> moved,
@@ -179,35 +212,48 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const s
     findPairsAmongFew(boxes, remembered ? moved[0] : 0, remembered, pairs);
     return;
   }
-  findPairsAmongMany(boxes, pairs);
+  findPairsAmongMany(boxes, true, pairs);
 }
 
-void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes,
+void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes, bool keep,
                                     std::vector<BoxPair>& pairs) {
   rememberedCount_ = 0;
-  reserveFor(static_cast<std::uint32_t>(boxes.size()));
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  reserveFor(count);
   // The sweep estimates its cost from the boxes' extents along each axis; the grid sizes its
   // cells by their larger sides. When the last call took the grid (a pile: the sweep
-  // declines), one pass gathers both; else the grid's pass waits until the sweep declines.
-  // Either way the same sums in the same order: only the work depends on the last call.
+  // declines), one pass gathers both, and whether every box lies within its fat box; else the
+  // grid's pass waits until the sweep declines. Either way the same sums in the same order:
+  // only the work depends on the last call.
   SweepAndPrune::Extents extents;
   real extentSum = 0;
   real maxExtent = 0;
-  const auto addGridExtent = [&extentSum, &maxExtent](const BoundingBox& box) {
-    extentSum += extent(box);
-    maxExtent = std::max(maxExtent, extent(box));
-  };
   const bool gridExpected = lastTookGrid_ || !allowSweep;
-  if (gridExpected)
-    gatherExtents<real>(boxes, extents, extentSum, maxExtent);
+  const bool mayReuse = keep && fatCount_ == count;
+  bool within = false;
+  if (gridExpected && mayReuse)
+    within = gatherExtents<true, real>(boxes, fatBoxes_.data(), extents, extentSum, maxExtent);
+  else if (gridExpected)
+    gatherExtents<false, real>(boxes, nullptr, extents, extentSum, maxExtent);
   else
     for (const BoundingBox& box : boxes) extents.add(box);
   lastTookGrid_ = false;
   if (allowSweep && sweep_.findPairs(boxes, extents, sweepTestsPerBox, pairs)) return;
-  if (!gridExpected)
-    for (const BoundingBox& box : boxes) addGridExtent(box);
+  if (!gridExpected) {
+    for (const BoundingBox& box : boxes) {
+      extentSum += extent(box);
+      maxExtent = std::max(maxExtent, extent(box));
+    }
+    within = mayReuse && allWithin(boxes, fatBoxes_.data());
+  }
   lastTookGrid_ = true;
-  findPairsInGrid(boxes, extentSum, maxExtent, pairs);
+  if (!keep) {
+    findPairsInGrid(boxes, extentSum, maxExtent, pairs);
+    return;
+  }
+  if (!within) findFatPairs(boxes, extentSum, maxExtent);
+  ++fatCalls_;
+  filterFatPairs(boxes, pairs);
 }
 
 namespace {
@@ -276,10 +322,95 @@ void BroadPhase::reserveFor(std::uint32_t count) {
   for (auto* buffer : {&cellOfBox_, &sortedBoxes_, &slotOfBox_, &oversized_})
     buffer->reserve(count);
   candidates_.reserve(2 * std::size_t{count} + 64);
+  fatBoxes_.reserve(count);
+  // (A pile of circles packed tight: about 5 fat pairs a box, with fatMarginPerCell.)
+  fatPairs_.reserve(6 * std::size_t{count} + 64);
   cellX_.reserve(count);
   cellY_.reserve(count);
   sweep_.reserve(count);
   reservedCount_ = count;
+}
+
+void BroadPhase::findFatPairs(std::span<const BoundingBox> boxes, real extentSum, real maxExtent) {
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  // The margin: a share of the cell the grid would choose for these boxes (findPairsInGrid).
+  // Fat boxes that served no call but the one that found them (boxes moving farther than
+  // the margin in a step) only cost: the next few searches go without a margin (the
+  // candidates are then the pairs themselves, which still serve while no box changes).
+  if (fatCount_ == count && fatCalls_ == 1 && fatMargin_ > 0) fatPlainSearches_ = fatBackOff;
+  const real cellSize =
+      std::max(std::min(maxExtent, 2 * (extentSum / static_cast<real>(count))), realEpsilon);
+  real margin = fatMarginPerCell * cellSize;
+  if (fatPlainSearches_ > 0) {
+    --fatPlainSearches_;
+    margin = 0;
+  }
+  if (!(margin < realMax)) margin = 0;  // an infinite cell (an infinite box among them)
+  fatBoxes_.resize(count);
+  BoundingBox* const fat = fatBoxes_.data();
+  // The grid sizes its cells by the fat boxes as stored (rounded): it must never meet a box
+  // larger than its cells without knowing (see findPairsInGrid's oversized boxes).
+  real fatSum = 0;
+  real fatMax = 0;
+  const Vector2 grow{margin, margin};
+  for (std::uint32_t i = 0; i < count; ++i) {
+    fat[i] = {boxes[i].lower - grow, boxes[i].upper + grow};
+    fatSum += extent(fat[i]);
+    fatMax = std::max(fatMax, extent(fat[i]));
+  }
+  // The dense grid's candidates buffer as large as the fat pairs may be (it would double,
+  // sized for the pairs of boxes, when the fat pairs outgrow that).
+  if (candidates_.size() < fatPairs_.capacity()) candidates_.resize(fatPairs_.capacity());
+  fatPairs_.clear();
+  findPairsInGrid(fatBoxes_, fatSum, fatMax, fatPairs_);
+  sortFatPairs(count);
+  fatCount_ = count;
+  fatCalls_ = 0;
+  fatMargin_ = margin;
+}
+
+void BroadPhase::sortFatPairs(std::uint32_t count) {
+  // By first index, then by second: two stable counting sorts (by second, then by first),
+  // through the candidates buffer, with one count per box for each key.
+  const std::size_t total = fatPairs_.size();
+  // (The candidates buffer grows with the fat pairs' capacity: geometrically.)
+  if (candidates_.size() < total) candidates_.resize(fatPairs_.capacity());
+  cellCursor_.assign(2 * (std::size_t{count} + 1), 0);
+  std::uint32_t* const bySecond = cellCursor_.data();
+  std::uint32_t* const byFirst = bySecond + count + 1;
+  BoxPair* const pairs = fatPairs_.data();
+  BoxPair* const other = candidates_.data();
+  for (std::size_t k = 0; k < total; ++k) {
+    ++bySecond[pairs[k].second + 1];
+    ++byFirst[pairs[k].first + 1];
+  }
+  for (std::uint32_t i = 0; i < count; ++i) {
+    bySecond[i + 1] += bySecond[i];
+    byFirst[i + 1] += byFirst[i];
+  }
+  for (std::size_t k = 0; k < total; ++k) other[bySecond[pairs[k].second]++] = pairs[k];
+  for (std::size_t k = 0; k < total; ++k) pairs[byFirst[other[k].first]++] = other[k];
+}
+
+void BroadPhase::filterFatPairs(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
+  // Every box lies within its fat box, so every overlapping pair is a fat pair: each fat pair
+  // is written at the end of the candidates buffer and kept (the end advanced) when its boxes
+  // overlap, without a branch (as in the dense grid). The order is the fat pairs'.
+  const std::size_t total = fatPairs_.size();  // (the sort sized the candidates buffer)
+  BoxPair* const out = candidates_.data();
+  const BoxPair* const in = fatPairs_.data();
+  const BoundingBox* const all = boxes.data();
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < total; ++k) {
+    const std::uint64_t word = loadPair(in + k);
+    const auto first = static_cast<std::uint32_t>(word >> firstShift);
+    const auto second = static_cast<std::uint32_t>(word >> (32 - firstShift));
+    storePair(out + n, word);
+    n += OverlapTest<real>(all[first])(all[second]);
+  }
+  if (pairs.size() + n > pairs.capacity())
+    pairs.reserve(std::max({pairs.size() + n, 2 * pairs.capacity(), 2 * boxes.size() + 64}));
+  pairs.insert(pairs.end(), out, out + n);
 }
 
 void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, real extentSum, real maxExtent,
