@@ -186,6 +186,40 @@ TEST(BroadPhaseCache, PlainCallsBetweenSteppingCallsKeepTheGridOrder) {
   }
 }
 
+TEST(BroadPhaseCache, KeptCandidatesAfterTheSweepTookCallsAreCheckedAgain) {
+  // A pile (the grid keeps its fat boxes), the same count in a row (the sweep takes the call,
+  // the fat boxes stay), then the pile again: nudged, the kept candidates serve; squeezed to
+  // half its pitch, most boxes have left their fat boxes and new pairs overlap (the
+  // check after the sweep declined, not the one the grid's extents pass makes).
+  const int count = 200;
+  const std::vector<BoundingBox> pile = latticeBoxes(23, count, 1.0);
+  std::vector<BoundingBox> row;
+  for (int i = 0; i < count; ++i) row.push_back(around(i, 0, 0.55));
+  const auto shifted = [&](double by, double scale) {
+    std::vector<BoundingBox> boxes;
+    for (const BoundingBox& b : pile) {
+      const Vector2 centre = (b.lower + b.upper) * real(0.5);
+      const Vector2 half = (b.upper - b.lower) * real(0.5);
+      const Vector2 place = centre * real(scale) + Vector2{real(by), real(by)};
+      boxes.push_back({place - half, place + half});
+    }
+    return boxes;
+  };
+  const std::vector<std::uint64_t> moved = allMoved(count);
+  BroadPhase broadPhase;
+  std::vector<BoxPair> pairs;
+  // Every other call the row (the sweep's pairs in its own order, compared as a set).
+  const std::vector<std::vector<BoundingBox>> piles = {pile, shifted(0.01, 1), shifted(0.02, 1),
+                                                       shifted(0.02, 0.5), shifted(0.03, 0.5)};
+  for (const std::vector<BoundingBox>& boxes : piles) {
+    broadPhase.findPairs(boxes, moved, pairs);
+    EXPECT_EQ(inOrder(pairs), allPairs(boxes));
+    broadPhase.findPairs(row, moved, pairs);
+    EXPECT_EQ(sortedPairs(pairs), allPairs(row));
+  }
+  EXPECT_GT(allPairs(piles[3]).size(), 2 * allPairs(pile).size());
+}
+
 TEST(BroadPhaseCache, SteppingAllocatesNothingOnceWarmedUp) {
   // Boxes circling about their places (radius 0.15, each at its own phase, period 40 calls):
   // the fat boxes are left and searched again every few calls, and every count repeats.
