@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <iterator>
 #include <type_traits>
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -113,6 +114,33 @@ Vector2 centreInCells(const BoundingBox& box, Real cellSize) {
   return (box.lower + box.upper) * real(0.5) / cellSize;
 }
 
+/// Makes room in @p pairs for @p more pairs (of @p count boxes), growing it geometrically: a
+/// count of pairs that creeps up must not reallocate at every new largest count.
+void makeRoom(std::vector<BoxPair>& pairs, std::size_t more, std::size_t count) {
+  if (pairs.size() + more > pairs.capacity())
+    pairs.reserve(std::max({pairs.size() + more, 2 * pairs.capacity(), 2 * count + 64}));
+}
+
+/// Appends the @p n pairs at @p from to @p pairs (of @p count boxes).
+void appendPairs(std::vector<BoxPair>& pairs, const BoxPair* from, std::size_t n,
+                 std::size_t count) {
+  makeRoom(pairs, n, count);
+  pairs.insert(pairs.end(), from, from + n);
+}
+
+/// The grid's cell side for boxes whose larger sides sum to @p extentSum, the largest
+/// @p maxExtent, @p count of them: as small as the largest box allows (about one box per cell
+/// for similar sizes), but no larger than twice the mean (rare big boxes are oversized).
+real cellSideFor(real extentSum, real maxExtent, std::uint32_t count) {
+  return std::max(std::min(maxExtent, 2 * (extentSum / static_cast<real>(count))), realEpsilon);
+}
+
+/// Whether @p box lies within @p fat, without a branch (false for a NaN corner).
+bool withinFat(const BoundingBox& box, const BoundingBox& fat) {
+  return (box.lower.x >= fat.lower.x) & (box.lower.y >= fat.lower.y) &
+         (box.upper.x <= fat.upper.x) & (box.upper.y <= fat.upper.y);
+}
+
 /// Adds every box of @p boxes, in index order, to @p extents (the sweep's) and to the sum
 /// @p extentSum and the largest @p maxExtent of their extents (the grid's, see extent()).
 /// With Within, also whether every box lies within its box of @p fat (the same index; false
@@ -169,11 +197,7 @@ bool gatherExtents(std::span<const BoundingBox> boxes, const BoundingBox* fat,
     extents.add(box);
     extentSum += extent(box);
     maxExtent = std::max(maxExtent, extent(box));
-    if constexpr (Within) {
-      within &= (box.lower.x >= fat->lower.x) & (box.lower.y >= fat->lower.y) &
-                (box.upper.x <= fat->upper.x) & (box.upper.y <= fat->upper.y);
-      ++fat;
-    }
+    if constexpr (Within) within &= withinFat(box, *fat++);
   }
   return within;
 }
@@ -181,11 +205,7 @@ bool gatherExtents(std::span<const BoundingBox> boxes, const BoundingBox* fat,
 /// Whether every box of @p boxes lies within its box of @p fat (false for a NaN corner).
 bool allWithin(std::span<const BoundingBox> boxes, const BoundingBox* fat) {
   bool within = true;
-  for (const BoundingBox& box : boxes) {
-    within &= (box.lower.x >= fat->lower.x) & (box.lower.y >= fat->lower.y) &
-              (box.upper.x <= fat->upper.x) & (box.upper.y <= fat->upper.y);
-    ++fat;
-  }
+  for (const BoundingBox& box : boxes) within &= withinFat(box, *fat++);
   return within;
 }
 
@@ -251,9 +271,15 @@ void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes, bool kee
     findPairsInGrid(boxes, extentSum, maxExtent, pairs);
     return;
   }
+  if (!within && mayReuse && findStrays(boxes)) {
+    ++fatCalls_;
+    filterWithStrays(boxes, pairs);
+    return;
+  }
   if (!within) findFatPairs(boxes, extentSum, maxExtent);
   ++fatCalls_;
-  filterFatPairs(boxes, pairs);
+  const std::size_t kept = keepOverlappingFatPairs<false>(boxes);
+  appendPairs(pairs, candidates_.data(), kept, count);
 }
 
 namespace {
@@ -328,6 +354,7 @@ void BroadPhase::reserveFor(std::uint32_t count) {
   cellX_.reserve(count);
   cellY_.reserve(count);
   sweep_.reserve(count);
+  strays_.reserve(fatStraysLimit);
   reservedCount_ = count;
 }
 
@@ -338,9 +365,7 @@ void BroadPhase::findFatPairs(std::span<const BoundingBox> boxes, real extentSum
   // the margin in a step) only cost: the next few searches go without a margin (the
   // candidates are then the pairs themselves, which still serve while no box changes).
   if (fatCount_ == count && fatCalls_ == 1 && fatMargin_ > 0) fatPlainSearches_ = fatBackOff;
-  const real cellSize =
-      std::max(std::min(maxExtent, 2 * (extentSum / static_cast<real>(count))), realEpsilon);
-  real margin = fatMarginPerCell * cellSize;
+  real margin = fatMarginPerCell * cellSideFor(extentSum, maxExtent, count);
   if (fatPlainSearches_ > 0) {
     --fatPlainSearches_;
     margin = 0;
@@ -392,7 +417,8 @@ void BroadPhase::sortFatPairs(std::uint32_t count) {
   for (std::size_t k = 0; k < total; ++k) pairs[byFirst[other[k].first]++] = other[k];
 }
 
-void BroadPhase::filterFatPairs(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
+template <bool withStrays>
+std::size_t BroadPhase::keepOverlappingFatPairs(std::span<const BoundingBox> boxes) {
   // Every box lies within its fat box, so every overlapping pair is a fat pair: each fat pair
   // is written at the end of the candidates buffer and kept (the end advanced) when its boxes
   // overlap, without a branch (as in the dense grid). The order is the fat pairs'.
@@ -406,20 +432,55 @@ void BroadPhase::filterFatPairs(std::span<const BoundingBox> boxes, std::vector<
     const auto first = static_cast<std::uint32_t>(word >> firstShift);
     const auto second = static_cast<std::uint32_t>(word >> (32 - firstShift));
     storePair(out + n, word);
-    n += OverlapTest<real>(all[first])(all[second]);
+    const std::size_t overlaps = OverlapTest<real>(all[first])(all[second]);
+    if constexpr (withStrays)  // (a stray's pairs are found anew)
+      n += overlaps & std::size_t{(strayMarks_[first] | strayMarks_[second]) == 0};
+    else
+      n += overlaps;
   }
-  if (pairs.size() + n > pairs.capacity())
-    pairs.reserve(std::max({pairs.size() + n, 2 * pairs.capacity(), 2 * boxes.size() + 64}));
-  pairs.insert(pairs.end(), out, out + n);
+  return n;
+}
+
+bool BroadPhase::findStrays(std::span<const BoundingBox> boxes) {
+  strays_.clear();  // (reserved for fatStraysLimit by reserveFor)
+  const BoundingBox* const fat = fatBoxes_.data();
+  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+    if (withinFat(boxes[i], fat[i])) continue;
+    if (strays_.size() == fatStraysLimit) return false;
+    strays_.push_back(i);
+  }
+  return true;
+}
+
+void BroadPhase::filterWithStrays(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
+  // A stray's kept candidates may miss its pairs now: they are left out, and its pairs are
+  // found among all boxes (a pair of two strays once, from the lower one), then sorted and
+  // merged, so the output is what a search would have given.
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  if (strayMarks_.size() < count) strayMarks_.resize(count, 0);
+  for (const std::uint32_t i : strays_) strayMarks_[i] = 1;
+  strayPairs_.clear();
+  for (const std::uint32_t i : strays_) {
+    const OverlapTest<real> overlapsStray(boxes[i]);
+    for (std::uint32_t j = 0; j < count; ++j)
+      if (j != i && (strayMarks_[j] == 0 || j > i) && overlapsStray(boxes[j]))
+        strayPairs_.push_back({std::min(i, j), std::max(i, j)});
+  }
+  const auto byIndex = [](const BoxPair& p, const BoxPair& q) {
+    return p.first != q.first ? p.first < q.first : p.second < q.second;
+  };
+  std::sort(strayPairs_.begin(), strayPairs_.end(), byIndex);
+  const std::size_t kept = keepOverlappingFatPairs<true>(boxes);
+  for (const std::uint32_t i : strays_) strayMarks_[i] = 0;
+  makeRoom(pairs, kept + strayPairs_.size(), count);
+  std::merge(candidates_.data(), candidates_.data() + kept, strayPairs_.begin(), strayPairs_.end(),
+             std::back_inserter(pairs), byIndex);
 }
 
 void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, real extentSum, real maxExtent,
                                  std::vector<BoxPair>& pairs) {
   const auto count = static_cast<std::uint32_t>(boxes.size());
-  // Cells as small as the largest box allows (about one box per cell for similar sizes), but
-  // no larger than twice the mean: rare big boxes are handled as oversized instead.
-  const real meanExtent = extentSum / static_cast<real>(count);
-  const real cellSize = std::max(std::min(maxExtent, 2 * meanExtent), realEpsilon);
+  const real cellSize = cellSideFor(extentSum, maxExtent, count);
 
   // Cell coordinates of the regular boxes, and the rectangle of cells they span.
   cellOfBox_.resize(count);
@@ -606,9 +667,7 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
   }
   // (Grown geometrically, as the zero-filled output was: a count of pairs that creeps up must
   // not reallocate the output at every new largest count.)
-  if (pairs.size() + n > pairs.capacity())
-    pairs.reserve(std::max({pairs.size() + n, 2 * pairs.capacity(), 2 * std::size_t{count} + 64}));
-  pairs.insert(pairs.end(), out, out + n);
+  appendPairs(pairs, out, n, count);
 }
 
 void BroadPhase::findPairsInHashedGrid(std::span<const BoundingBox> boxes,

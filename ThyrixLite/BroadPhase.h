@@ -44,7 +44,9 @@ struct BoxColumns {
 /// for "fat" boxes, each box enlarged by fatMarginPerCell of a cell on every side, and the
 /// overlapping pairs of fat boxes are kept, sorted by first then second index. While every
 /// box lies within its fat box, each of its overlaps is such a pair: a call tests only these,
-/// in their order, and the grid is searched again once a box has left its fat box or the
+/// in their order. A few boxes out of their fat boxes (strays: one fast body crossing a crowd
+/// at rest) are tested against every box instead, their pairs merged into the order; the grid
+/// is searched again once more boxes than fatStraysLimit have left their fat boxes or the
 /// count has changed. The output is therefore the grid's pairs sorted by first then second
 /// index, whenever the candidates were found: it still depends only on the input.
 class BroadPhase {
@@ -90,6 +92,10 @@ class BroadPhase {
   /// Fat boxes that served only the call that found them (boxes moving farther than the
   /// margin in a step): the next this many searches use no margin.
   static constexpr std::uint32_t fatBackOff = 8;
+  /// Up to this many boxes out of their fat boxes are tested against every box, each call,
+  /// instead of searching the grid again (a search costs about as much as testing some tens of
+  /// boxes against a thousand).
+  static constexpr std::uint32_t fatStraysLimit = 8;
 
  private:
   void findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint64_t moved, bool remembered,
@@ -108,8 +114,17 @@ class BroadPhase {
   void findFatPairs(std::span<const BoundingBox> boxes, real extentSum, real maxExtent);
   /// Puts fatPairs_ (of @p count boxes) in order by first index, then by second.
   void sortFatPairs(std::uint32_t count);
-  /// Appends to @p pairs, in their order, the pairs of fatPairs_ whose @p boxes overlap.
-  void filterFatPairs(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
+  /// Writes to the front of candidates_, in their order, the pairs of fatPairs_ whose
+  /// @p boxes overlap, and returns their number; with @p withStrays, without those of the
+  /// boxes marked in strayMarks_.
+  template <bool withStrays>
+  std::size_t keepOverlappingFatPairs(std::span<const BoundingBox> boxes);
+  /// Lists in strays_ the boxes of @p boxes out of their fat boxes; false (the list cut
+  /// short) when there are more than fatStraysLimit.
+  bool findStrays(std::span<const BoundingBox> boxes);
+  /// The kept candidates' overlapping pairs without the strays', merged in order with the
+  /// strays' pairs found by testing them against every box, appended to @p pairs.
+  void filterWithStrays(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
   void findPairsInGrid(std::span<const BoundingBox> boxes, real extentSum, real maxExtent,
                        std::vector<BoxPair>& pairs);
   void findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::int64_t lowX,
@@ -145,12 +160,15 @@ class BroadPhase {
   std::vector<BoxPair> candidates_;         // the dense grid's candidate pairs (only grows)
 
   // Kept candidates (findPairs() with moved bits, in the grid).
-  std::vector<BoundingBox> fatBoxes_;   // the boxes enlarged by fatMargin_ when searched
-  std::vector<BoxPair> fatPairs_;       // the overlapping pairs of fatBoxes_, in order
-  std::uint32_t fatCount_ = 0;          // boxes of fatBoxes_ (0: nothing kept)
-  std::uint32_t fatCalls_ = 0;          // calls served since the search
-  std::uint32_t fatPlainSearches_ = 0;  // searches left without a margin (fatBackOff)
-  real fatMargin_ = 0;                  // the margin of fatBoxes_
+  std::vector<BoundingBox> fatBoxes_;     // the boxes enlarged by fatMargin_ when searched
+  std::vector<BoxPair> fatPairs_;         // the overlapping pairs of fatBoxes_, in order
+  std::uint32_t fatCount_ = 0;            // boxes of fatBoxes_ (0: nothing kept)
+  std::uint32_t fatCalls_ = 0;            // calls served since the search
+  std::uint32_t fatPlainSearches_ = 0;    // searches left without a margin (fatBackOff)
+  real fatMargin_ = 0;                    // the margin of fatBoxes_
+  std::vector<std::uint32_t> strays_;     // boxes out of their fat boxes, by index
+  std::vector<std::uint8_t> strayMarks_;  // 1 for a stray, else 0 (one per box)
+  std::vector<BoxPair> strayPairs_;       // the strays' overlapping pairs
 
   SweepAndPrune sweep_;        // boxes along a line
   bool lastTookGrid_ = false;  // the last call of more than smallCount boxes used the grid

@@ -146,6 +146,29 @@ TEST(BroadPhaseCache, BoxesOutrunningTheMarginThenAtRestAreFollowed) {
   EXPECT_GT(instances.found(), 1000u);
 }
 
+TEST(BroadPhaseCache, FastBoxesCrossingACrowdAtRestGiveTheSortedPairs) {
+  // A crowd at rest and a few boxes crossing it a unit a call, each out of its fat box at every
+  // call (tested against every box, up to fatStraysLimit of them; more: the grid again). Two
+  // of them travel side by side, overlapping each other; one turns NaN for a while.
+  for (const int fast : {1, 2, 8, 9}) {
+    SCOPED_TRACE(::testing::Message() << fast << " fast boxes");
+    SteppingInstances instances;
+    const std::vector<BoundingBox> crowd = latticeBoxes(29, 400, 1.0);
+    std::vector<BoundingBox> boxes = crowd;
+    for (int step = 0; step < 40; ++step) {
+      SCOPED_TRACE(::testing::Message() << "step " << step);
+      for (int k = 0; k < fast; ++k) {
+        const double x = -5 + step + (k == 1 ? 0.3 : 0);  // boxes 0 and 1 side by side
+        const double y = 3 + (k == 1 ? 0 : 2.1 * k);
+        boxes[static_cast<std::size_t>(37 * k + 5)] = around(x, y, 0.6);
+      }
+      if (fast == 2 && step >= 10 && step < 15) boxes[5] = {{nan, nan}, {nan, nan}};
+      instances.check(boxes);
+    }
+    EXPECT_GT(instances.found(), 1000u);
+  }
+}
+
 TEST(BroadPhaseCache, NaNAndInfiniteBoxesComeAndGo) {
   // A box with a NaN corner overlaps nothing, an infinite one everything it covers; either may
   // appear in a crowd and leave again.
