@@ -26,11 +26,16 @@ void Islands::finish() {
   // counting each island's rows as they are numbered. Counts are kept one entry late (island
   // i's count at i + 2), so that the fill's cursors are islandStart_ itself: island i's cursor
   // is entry i + 1, which ends as its end, the start of island i + 1.
+  // Both passes keep the count or cursor of the island of the last row in a register: rows
+  // mostly follow rows of the same island (a pile is one), and an increment in memory at each
+  // row made each row wait for the last one's store.
   const std::size_t rowCount = islandOfRow_.size();
   std::uint32_t* const islandOfRow = islandOfRow_.data();
   std::uint32_t* const islandOfBody = islandOfBody_.data();
   islandStart_.assign(2, 0);
   std::uint32_t islandCount = 0;
+  std::uint32_t current = 0;  // the island whose count is in `run` (its entry is stale)
+  std::uint32_t run = 0;
   for (std::size_t k = 0; k < rowCount; ++k) {
     const std::uint32_t root = find(parent_.data(), islandOfRow[k]);
     if (islandOfBody[root] == none) {
@@ -39,13 +44,30 @@ void Islands::finish() {
     }
     const std::uint32_t island = islandOfBody[root];
     islandOfRow[k] = island;
-    ++islandStart_[island + 2];
+    if (island != current) {
+      islandStart_[current + 2] = run;
+      current = island;
+      run = islandStart_[island + 2];
+    }
+    ++run;
   }
+  if (rowCount != 0) islandStart_[current + 2] = run;
   std::uint32_t* const start = islandStart_.data();
   for (std::uint32_t i = 0; i < islandCount; ++i) start[i + 2] += start[i + 1];
   contacts_.resize(rowCount);
-  for (std::size_t k = 0; k < rowCount; ++k)
-    contacts_[start[islandOfRow[k] + 1]++] = static_cast<std::uint32_t>(k);
+  std::uint32_t* const contacts = contacts_.data();
+  current = 0;
+  std::uint32_t cursor = start[1];
+  for (std::size_t k = 0; k < rowCount; ++k) {
+    const std::uint32_t island = islandOfRow[k];
+    if (island != current) {
+      start[current + 1] = cursor;
+      current = island;
+      cursor = start[island + 1];
+    }
+    contacts[cursor++] = static_cast<std::uint32_t>(k);
+  }
+  if (rowCount != 0) start[current + 1] = cursor;
   islandStart_.pop_back();  // the entry one late: islandCount + 1 starts remain
 }
 
