@@ -22,8 +22,6 @@
 namespace thyrix {
 namespace {
 
-constexpr std::uint32_t noBody = ~std::uint32_t{0};
-
 /// Where the island's row of rank @p p (in sweep order, see sweepOrder()) goes among its @p n
 /// local rows. Rows come in detection order or by height, where a body's contacts follow one
 /// another or are close; then every row would wait for the previous
@@ -69,14 +67,13 @@ real convergenceBound(real tolerance, real leastResponse, std::size_t n) {
 void GaussSeidelSolver::reserve(std::size_t bodies, std::size_t rows) {
   for (auto* buffer : {&forces_, &changes_, &direction_, &responses_}) buffer->reserve(rows);
   slot_.reserve(rows);
+  rowResponses_.reserve(rows);
   bucketStart_.reserve(rows + 1);
   rows_.reserve(rows);
   turning_.reserve(rows);
-  // Each row may bring two bodies of its own (a fixed body gets one copy per row).
-  velocities_.reserve(2 * rows);
-  omegas_.reserve(2 * rows);
-  globalBody_.reserve(2 * rows);
-  localBody_.reserve(bodies);
+  // The bodies, then up to two copies of fixed bodies a row.
+  velocities_.reserve(bodies + 2 * rows);
+  omegas_.reserve(bodies + 2 * rows);
 }
 
 int GaussSeidelSolver::solve(std::span<const std::uint32_t> island,
@@ -122,18 +119,11 @@ int GaussSeidelSolver::solve(std::span<const std::uint32_t> island,
 }
 
 void GaussSeidelSolver::sweepOrder(std::span<const std::uint32_t> island,
-                                   std::span<const ContactConstraint> rows) {
+                                   std::span<const ContactConstraint> rows, real low, real high) {
   const std::size_t n = island.size();
   slot_.resize(n);
   std::uint32_t* const slot = slot_.data();
   constexpr real infinity = std::numeric_limits<real>::infinity();
-  real low = infinity;
-  real high = -infinity;
-  for (const std::uint32_t k : island) {
-    // NaN keys are skipped (std::min and std::max keep the first argument).
-    low = std::min(low, rows[k].order);
-    high = std::max(high, rows[k].order);
-  }
   const real range = high - low;
   ordered_ = range > 0 && range < infinity;
   if (!ordered_) {  // all keys equal (no gravity): island order
@@ -162,52 +152,67 @@ real GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
                                std::span<const ContactConstraint> rows,
                                std::span<const SolverBody> bodies, real relaxation) {
   const std::size_t n = island.size();
-  sweepOrder(island, rows);
-  const std::uint32_t* const slot = slot_.data();
-  if (localBody_.size() < bodies.size()) localBody_.resize(bodies.size(), noBody);
-  // Each row brings at most two bodies: the local arrays are sized once, then filled through
-  // plain pointers (one pass, no growth checks).
-  if (velocities_.size() < 2 * n) {
-    velocities_.resize(2 * n);
-    omegas_.resize(2 * n);
-    globalBody_.resize(2 * n);
+  // The island's bodies keep their own indices in the local velocities (so a body needs no
+  // local number: whether a row's body is met for the first time was an unpredictable
+  // branch); a body that cannot move gets a private copy in each row after them, so that rows
+  // that share only a wall do not wait on each other's (null) updates of its velocity. The
+  // arrays are sized once, then filled through plain pointers (no growth checks).
+  const std::size_t privateStart = bodies.size();
+  if (velocities_.size() < privateStart + 2 * n) {
+    velocities_.resize(privateStart + 2 * n);
+    omegas_.resize(privateStart + 2 * n);
   }
   rows_.resize(n);
   forces_.resize(n);
   changes_.resize(n);
   responses_.resize(n);
+  rowResponses_.resize(n);
   Vector2* const velocity = velocities_.data();
   real* const omega = omegas_.data();
-  std::uint32_t* const global = globalBody_.data();
-  std::uint32_t* const localOf = localBody_.data();
-  std::uint32_t used = 0;
-  const auto localIndex = [&](std::uint32_t body, const SolverBody& b) {
-    // A body that cannot move gets a private copy in each row: rows that share only a wall
-    // then do not wait on each other's (null) updates of its velocity.
-    if (b.inverseMass == 0 && b.inverseInertia == 0) {
-      velocity[used] = b.v;
-      omega[used] = b.omega;
-      global[used] = noBody;
-      return used++;
-    }
-    std::uint32_t index = localOf[body];
-    if (index == noBody) {
-      index = used++;
-      localOf[body] = index;
-      velocity[index] = b.v;
-      omega[index] = b.omega;
-      global[index] = body;
-    }
-    return index;
-  };
-  // A lever arm matters if its body turns or can be turned (a fixed wall's does not).
-  const auto turns = [](real arm, const SolverBody& body) {
-    return arm != 0 && (body.inverseInertia != 0 || body.omega != 0);
-  };
+  RowResponse* const rowResponse = rowResponses_.data();
   // relaxation / A_kk; a row nothing can move along takes no force (its zero diagonal would
   // poison the island).
   const auto inverseScaledOf = [relaxation](real response) {
     return response > 0 ? relaxation / response : 0;
+  };
+  // A first pass, short enough for many rows to be under way at once: every row copies its
+  // bodies' velocities, before any row adds its force's (a body's rows all copy the same
+  // values, so no test for its first), and finds the range of the keys for sweepOrder() and
+  // its A_kk and its division, which the row's copy below would otherwise wait on.
+  constexpr real infinity = std::numeric_limits<real>::infinity();
+  real low = infinity;
+  real high = -infinity;
+  // The least A_kk, NaN if one is NaN (for the convergence bound).
+  real leastResponse = infinity;
+  for (std::size_t p = 0; p < n; ++p) {
+    const ContactConstraint& c = rows[island[p]];
+    const SolverBody& bodyA = bodies[c.a];
+    const SolverBody& bodyB = bodies[c.b];
+    velocity[c.a] = bodyA.v;
+    omega[c.a] = bodyA.omega;
+    velocity[c.b] = bodyB.v;
+    omega[c.b] = bodyB.omega;
+    // NaN keys are skipped (std::min and std::max keep the first argument).
+    low = std::min(low, c.order);
+    high = std::max(high, c.order);
+    const real response = c.selfResponse(bodyA, bodyB);
+    rowResponse[p] = {response, inverseScaledOf(response)};
+    // A NaN, once taken, stays: a later row's response must not replace it (the least of the
+    // rows after a NaN could exceed an A_kk before it, and the bound would then be wrong).
+    if (response < leastResponse || std::isnan(response)) leastResponse = response;
+  }
+  sweepOrder(island, rows, low, high);
+  const std::uint32_t* const slot = slot_.data();
+  auto privateSlot = static_cast<std::uint32_t>(privateStart);
+  const auto localIndex = [&](std::uint32_t body, const SolverBody& b) {
+    if (b.inverseMass != 0 || b.inverseInertia != 0) return body;
+    velocity[privateSlot] = b.v;
+    omega[privateSlot] = b.omega;
+    return privateSlot++;
+  };
+  // A lever arm matters if its body turns or can be turned (a fixed wall's does not).
+  const auto turns = [](real arm, const SolverBody& body) {
+    return arm != 0 && (body.inverseInertia != 0 || body.omega != 0);
   };
   const auto turningOf = [](const ContactConstraint& c, const SolverBody& bodyA,
                             const SolverBody& bodyB, real inverseScaled) {
@@ -215,15 +220,13 @@ real GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
                    c.armB * bodyB.inverseInertia};
   };
   bool turning = false;
-  // The least A_kk, NaN if one is NaN (for the convergence bound).
-  real leastResponse = std::numeric_limits<real>::infinity();
   for (std::size_t p = 0; p < n; ++p) {
     const ContactConstraint& c = rows[island[p]];
     const std::size_t q = slot[p];
     const SolverBody& bodyA = bodies[c.a];
     const SolverBody& bodyB = bodies[c.b];
-    const real response = c.selfResponse(bodyA, bodyB);
-    const real inverseScaled = inverseScaledOf(response);
+    const real response = rowResponse[p].response;
+    const real inverseScaled = rowResponse[p].inverseScaled;
     const std::uint32_t a = localIndex(c.a, bodyA);
     const std::uint32_t b = localIndex(c.b, bodyB);
     // The starting force's velocities, added here in island order (no pass of its own), by
@@ -237,9 +240,6 @@ real GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
                 c.normal * inverseScaled,           c.target * inverseScaled,
                 a * std::uint32_t{sizeof(Vector2)}, b * std::uint32_t{sizeof(Vector2)}};
     responses_[q] = response;
-    // A NaN, once taken, stays: a later row's response must not replace it (the least of the
-    // rows after a NaN could exceed an A_kk before it, and the bound would then be wrong).
-    if (response < leastResponse || std::isnan(response)) leastResponse = response;
     forces_[q] = force;
     if (turning) {
       turning_[q] = turningOf(c, bodyA, bodyB, inverseScaled);
@@ -257,7 +257,6 @@ real GaussSeidelSolver::gather(std::span<const std::uint32_t> island,
     }
   }
   turningIsland_ = turning;
-  bodyCount_ = used;
   return leastResponse;
 }
 
@@ -450,13 +449,17 @@ void GaussSeidelSolver::conjugateStep(real beta) {
 
 void GaussSeidelSolver::scatter(std::span<const std::uint32_t> island,
                                 std::span<ContactConstraint> rows, std::span<SolverBody> bodies) {
-  for (std::size_t p = 0; p < island.size(); ++p) rows[island[p]].force = forces_[slot_[p]];
-  for (std::size_t l = 0; l < bodyCount_; ++l) {
-    const std::uint32_t body = globalBody_[l];
-    if (body == noBody) continue;  // a fixed body's copy
-    bodies[body].v = velocities_[l];
-    bodies[body].omega = omegas_[l];
-    localBody_[body] = noBody;
+  // Each row gives back its bodies' velocities (a body's rows all give the same; a fixed
+  // body's own entry still holds the velocity it was given).
+  const Vector2* const velocity = velocities_.data();
+  const real* const omega = omegas_.data();
+  for (std::size_t p = 0; p < island.size(); ++p) {
+    ContactConstraint& row = rows[island[p]];
+    row.force = forces_[slot_[p]];
+    bodies[row.a].v = velocity[row.a];
+    bodies[row.a].omega = omega[row.a];
+    bodies[row.b].v = velocity[row.b];
+    bodies[row.b].omega = omega[row.b];
   }
 }
 

@@ -35,16 +35,16 @@ namespace thyrix {
 /// ContactSolverSettings::gaussSeidelMaxIterationsInHeightOrder; keys all equal (no gravity),
 /// or not all finite, leave the island's order and gaussSeidelMaxIterations.
 ///
-/// The solver copies an island into contiguous local arrays (rows with what a sweep needs
-/// precomputed, bodies in order of first use) before sweeping, so a sweep streams through memory;
+/// The solver copies an island into local arrays (rows with what a sweep needs precomputed,
+/// contiguous in sweep order; velocities at the bodies' own indices) before sweeping;
 /// the buffers are kept between calls (no allocation once they reached the largest island).
 /// Built with GCC or Clang for x86-64, the sweeps and conjugate steps also have a copy
 /// compiled for AVX, run where the processor has it: the same operations, the same bits.
 class GaussSeidelSolver {
  public:
   /// Solves the rows listed in @p island (forces into the rows, velocities into @p bodies).
-  /// An island has at most 2^27 rows (2^28 with float): its rows name their bodies, up to two
-  /// each, by 32-bit byte offsets of 2D velocities, which a larger island would wrap (not
+  /// @p bodies plus two per row of the island are at most 2^28 (2^29 with float): the local rows
+  /// name their velocities by 32-bit byte offsets, which more would wrap (not
   /// checked). @return the number of sweeps done.
   int solve(std::span<const std::uint32_t> island, std::span<ContactConstraint> rows,
             std::span<SolverBody> bodies, const ContactSolverSettings& settings);
@@ -81,8 +81,10 @@ class GaussSeidelSolver {
   };
 
   /// Fills slot_, each island position's local row: the rows nearly in order of their keys
-  /// (ContactConstraint::order), interleaved. Sets ordered_.
-  void sweepOrder(std::span<const std::uint32_t> island, std::span<const ContactConstraint> rows);
+  /// (ContactConstraint::order), which range from @p low to @p high (NaN keys aside),
+  /// interleaved. Sets ordered_.
+  void sweepOrder(std::span<const std::uint32_t> island, std::span<const ContactConstraint> rows,
+                  real low, real high);
   /// Copies the island into the local rows and bodies, the rows interleaved so that
   /// consecutive ones seldom share a body (see interleaved() in the source).
   /// @return the least A_kk of the rows, NaN if one is NaN.
@@ -106,18 +108,22 @@ class GaussSeidelSolver {
   std::vector<Row> rows_;
   std::vector<Turning> turning_;  // written and read only when a row of the island turns
   bool turningIsland_ = false;
-  std::vector<real> responses_;      // each row's A_kk, for largestChange()
-  std::vector<Vector2> velocities_;  // the island's bodies: the first bodyCount_
-  std::vector<real> omegas_;         // their angular velocities
-  std::size_t bodyCount_ = 0;
+  /// A row's A_kk and `relaxation / A_kk`, found in gather()'s first pass.
+  struct RowResponse {
+    real response;
+    real inverseScaled;
+  };
+  std::vector<RowResponse> rowResponses_;  // by island position, for gather()
+  std::vector<real> responses_;            // each row's A_kk, for largestChange()
+  // The island's bodies at their own indices, then fixed bodies' copies (see gather()).
+  std::vector<Vector2> velocities_;
+  std::vector<real> omegas_;  // their angular velocities
   std::vector<real> forces_;
   std::vector<real> changes_;               // each force's change in the last sweep
   std::vector<real> direction_;             // the conjugate direction p
   bool ordered_ = false;                    // the island's rows are in order of their keys
   std::vector<std::uint32_t> slot_;         // island position -> local row
   std::vector<std::uint32_t> bucketStart_;  // sweepOrder()'s counting sort
-  std::vector<std::uint32_t> globalBody_;   // local body -> index in the caller's bodies, or none
-  std::vector<std::uint32_t> localBody_;    // caller's body -> local index, or none
 };
 
 }  // namespace thyrix
