@@ -40,6 +40,9 @@ struct StepStatistics {
 /// 4. applyMouseForce(); 5. computeDerivativesWithoutContacts() (each object's, in the gravity
 /// field);
 /// 6. solveContacts(); 7. each object's control(); 8. integrator.integrate().
+/// In a world of core shapes only (no object with hooks of its own, no articulated agent),
+/// phase 3 runs after phase 6, with the forces: nothing reads the lists in between, and after
+/// the step they are the same.
 /// The phases are public so that a program can run its own variant of the step.
 ///
 /// A simulator owns everything it uses (no global state): worlds in different threads are
@@ -64,7 +67,9 @@ class Simulator : public World {
   /// step with one detection into an empty list, then a solve, leaves its contacts for the
   /// next step's rest skipping and warm start.)
   void detectContacts();
-  /// Phase 3: lists each contact in its two objects' `contacts`.
+  /// Phase 3: lists each contact in its two objects' `contacts` (with the contacts' forces,
+  /// 0 until solveContacts() gives them). In a world of core shapes only, advanceTime() runs
+  /// it after solveContacts() instead: nothing reads the lists in between.
   void indexContacts();
   /// Phase 4: while dragging, adds the force that pulls the grabbed point to the mouse.
   void applyMouseForce();
@@ -411,7 +416,11 @@ class Simulator : public World {
   bool previousValid_ = false;     // previousContacts_ is the last detection's, complete
   bool previousIndexed_ = false;   // previousOrder_ and previousSortedKeys_ are up to date
   bool contactsSolved_ = false;    // the solver wrote the forces of `contacts`
-  bool previousSolved_ = false;    // previousContacts_ carries its solve's forces (warm start)
+  // Core shapes only (no object's own hooks, no articulated agent): advanceTime() indexes the
+  // contacts after solveContacts(), as nothing reads the lists before.
+  bool listAfterSolve_ = true;
+  bool listsCurrent_ = false;    // indexContacts() ran since the last eraseContacts()
+  bool previousSolved_ = false;  // previousContacts_ carries its solve's forces (warm start)
   // The objects that do not keep PhysicalObject's step hooks, in registration order (the
   // others' hooks are called without virtual calls).
   std::vector<std::uint32_t> customObjects_;

@@ -508,12 +508,14 @@ void Simulator::indexContacts() {
     objectContactCursor_[i] = offset;
     offset += n;
   }
+  // The contacts' forces: 0 from detection until the solve gives them (advanceTime() in a
+  // world of core shapes indexes after it).
   for (std::uint32_t k = 0; k < contacts.size(); ++k) {
     const GlobalContactInfo& c = contacts.items_[k];
     objectContacts_[objectContactCursor_[c.bodyA]++] =
-        ContactInfo{k, c.objectB, c.primitiveA, c.primitiveB, c.point, -c.normal, c.depth, 0};
+        ContactInfo{k, c.objectB, c.primitiveA, c.primitiveB, c.point, -c.normal, c.depth, c.force};
     objectContacts_[objectContactCursor_[c.bodyB]++] =
-        ContactInfo{k, c.objectA, c.primitiveB, c.primitiveA, c.point, c.normal, c.depth, 0};
+        ContactInfo{k, c.objectA, c.primitiveB, c.primitiveA, c.point, c.normal, c.depth, c.force};
   }
   // Each cursor ended where the next listed object's slice begins: slice, and zero it again.
   std::uint32_t begin = 0;
@@ -523,6 +525,7 @@ void Simulator::indexContacts() {
     objectContactCursor_[i] = 0;
     begin = end;
   }
+  listsCurrent_ = true;
   // The counted objects are the listed ones now (and none is counted).
   std::swap(listedObjects_, countedObjects_);
   listedCount_ = countedCount_;

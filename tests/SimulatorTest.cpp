@@ -222,6 +222,51 @@ TEST(Simulator, ContactListsFollowThePhasesRunByHand) {
   expectContactListsMatch(simulator);
 }
 
+// In a world of core shapes, advanceTime() lists the contacts after the solve: the objects
+// and their lists end each step as with the phases run by hand in their documented order.
+TEST_P(SimulatorTest, AdvanceTimeEndsAsThePhasesInOrder) {
+  Simulator stepped;
+  Simulator byHand;
+  for (Simulator* simulator : {&stepped, &byHand}) {
+    simulator->setContactSolver(GetParam());
+    simulator->setGravity({0, -1});
+  }
+  const auto bodies = scenes::addMixedPile(stepped, 80, 5);
+  const auto handBodies = scenes::addMixedPile(byHand, 80, 5);
+  for (int step = 0; step < 200; ++step) {
+    scenes::push(bodies, {-1, 0});
+    scenes::push(handBodies, {-1, 0});
+    stepped.advanceTime();
+    byHand.eraseContacts();
+    byHand.detectContacts();
+    byHand.indexContacts();
+    byHand.applyMouseForce();
+    byHand.computeDerivativesWithoutContacts();
+    byHand.solveContacts();
+    for (PhysicalObject& object : byHand.objects) object.control();
+    byHand.integrator.integrate(byHand.objects, byHand.timestep());
+  }
+  ASSERT_GE(stepped.contacts.size(), 64u);
+  ASSERT_EQ(stepped.objects.size(), byHand.objects.size());
+  for (std::size_t i = 0; i < stepped.objects.size(); ++i) {
+    const PhysicalObject& a = stepped.objects[i];
+    const PhysicalObject& b = byHand.objects[i];
+    EXPECT_EQ(a.r, b.r) << "object " << i;
+    EXPECT_EQ(a.v, b.v) << "object " << i;
+    ASSERT_EQ(a.contacts.size(), b.contacts.size()) << "object " << i;
+    for (std::size_t j = 0; j < a.contacts.size(); ++j) {
+      const ContactInfo& x = a.contacts[j];
+      const ContactInfo& y = b.contacts[j];
+      EXPECT_EQ(x.index, y.index);
+      EXPECT_EQ(x.point, y.point);
+      EXPECT_EQ(x.normal, y.normal);
+      EXPECT_EQ(x.depth, y.depth);
+      EXPECT_EQ(x.force, y.force);
+    }
+  }
+  expectContactListsMatch(stepped);
+}
+
 /// The largest overlap of a circle of radius 0.1 pushed onto a floor at 4 m/s (0.04 m, 40% of
 /// its radius, per step), its heights chosen so that no step ends exactly on the floor.
 real overlapOfFastCircle(ContactSolverKind solver, real speculativeTravel) {
