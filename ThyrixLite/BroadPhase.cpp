@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
-#include <iterator>
 #include <type_traits>
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -114,41 +113,12 @@ Vector2 centreInCells(const BoundingBox& box, Real cellSize) {
   return (box.lower + box.upper) * real(0.5) / cellSize;
 }
 
-/// Makes room in @p pairs for @p more pairs (of @p count boxes), growing it geometrically: a
-/// count of pairs that creeps up must not reallocate at every new largest count.
-void makeRoom(std::vector<BoxPair>& pairs, std::size_t more, std::size_t count) {
-  if (pairs.size() + more > pairs.capacity())
-    pairs.reserve(std::max({pairs.size() + more, 2 * pairs.capacity(), 2 * count + 64}));
-}
-
-/// Appends the @p n pairs at @p from to @p pairs (of @p count boxes).
-void appendPairs(std::vector<BoxPair>& pairs, const BoxPair* from, std::size_t n,
-                 std::size_t count) {
-  makeRoom(pairs, n, count);
-  pairs.insert(pairs.end(), from, from + n);
-}
-
-/// The grid's cell side for boxes whose larger sides sum to @p extentSum, the largest
-/// @p maxExtent, @p count of them: as small as the largest box allows (about one box per cell
-/// for similar sizes), but no larger than twice the mean (rare big boxes are oversized).
-real cellSideFor(real extentSum, real maxExtent, std::uint32_t count) {
-  return std::max(std::min(maxExtent, 2 * (extentSum / static_cast<real>(count))), realEpsilon);
-}
-
-/// Whether @p box lies within @p fat, without a branch (false for a NaN corner).
-bool withinFat(const BoundingBox& box, const BoundingBox& fat) {
-  return (box.lower.x >= fat.lower.x) & (box.lower.y >= fat.lower.y) &
-         (box.upper.x <= fat.upper.x) & (box.upper.y <= fat.upper.y);
-}
-
 /// Adds every box of @p boxes, in index order, to @p extents (the sweep's) and to the sum
 /// @p extentSum and the largest @p maxExtent of their extents (the grid's, see extent()).
-/// With Within, also whether every box lies within its box of @p fat (the same index; false
-/// for a NaN corner), else true. A template: a float build never instantiates the double
-/// branch.
-template <bool Within, class Real>
-bool gatherExtents(std::span<const BoundingBox> boxes, const BoundingBox* fat,
-                   SweepAndPrune::Extents& extents, Real& extentSum, Real& maxExtent) {
+/// A template: a float build never instantiates the double branch.
+template <class Real>
+void gatherExtents(std::span<const BoundingBox> boxes, SweepAndPrune::Extents& extents,
+                   Real& extentSum, Real& maxExtent) {
 #if defined(__SSE2__)
   if constexpr (std::is_same_v<Real, double>) {
     // A box's x and y in the two halves of a register (a pile's boxes in every step): the
@@ -162,17 +132,10 @@ bool gatherExtents(std::span<const BoundingBox> boxes, const BoundingBox* fat,
     __m128d high = _mm_set_pd(extents.highY, extents.highX);
     __m128d sum = _mm_set_sd(extentSum);
     __m128d most = _mm_set_sd(maxExtent);
-    __m128d within = _mm_castsi128_pd(_mm_set1_epi32(-1));
-    const auto* fatCorners = reinterpret_cast<const Real*>(fat);
     for (const BoundingBox& box : boxes) {
       const auto* const corners = reinterpret_cast<const Real*>(&box);
       const __m128d lower = _mm_loadu_pd(corners);
       const __m128d upper = _mm_loadu_pd(corners + 2);
-      if constexpr (Within) {
-        within = _mm_and_pd(within, _mm_and_pd(_mm_cmpge_pd(lower, _mm_loadu_pd(fatCorners)),
-                                               _mm_cmple_pd(upper, _mm_loadu_pd(fatCorners + 2))));
-        fatCorners += 4;
-      }
       const __m128d sides = _mm_sub_pd(upper, lower);
       sums = _mm_add_pd(sums, sides);
       low = _mm_min_pd(lower, low);
@@ -189,36 +152,20 @@ bool gatherExtents(std::span<const BoundingBox> boxes, const BoundingBox* fat,
     extents.highY = _mm_cvtsd_f64(_mm_unpackhi_pd(high, high));
     extentSum = _mm_cvtsd_f64(sum);
     maxExtent = _mm_cvtsd_f64(most);
-    return _mm_movemask_pd(within) == 3;
+    return;
   }
 #endif
-  bool within = true;
   for (const BoundingBox& box : boxes) {
     extents.add(box);
     extentSum += extent(box);
     maxExtent = std::max(maxExtent, extent(box));
-    if constexpr (Within) within &= withinFat(box, *fat++);
   }
-  return within;
-}
-
-/// Whether every box of @p boxes lies within its box of @p fat (false for a NaN corner).
-bool allWithin(std::span<const BoundingBox> boxes, const BoundingBox* fat) {
-  bool within = true;
-  for (const BoundingBox& box : boxes) within &= withinFat(box, *fat++);
-  return within;
 }
 
 }  // namespace
 
 void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
-  pairs.clear();
-  const auto count = static_cast<std::uint32_t>(boxes.size());
-  if (count <= smallCount) {
-    findPairsAmongFew(boxes, 0, false, pairs);
-    return;
-  }
-  findPairsAmongMany(boxes, false, pairs);
+  findPairs(boxes, {}, pairs);
 }
 
 void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const std::uint64_t> moved,
@@ -232,54 +179,35 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const s
     findPairsAmongFew(boxes, remembered ? moved[0] : 0, remembered, pairs);
     return;
   }
-  findPairsAmongMany(boxes, true, pairs);
+  findPairsAmongMany(boxes, pairs);
 }
 
-void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes, bool keep,
+void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes,
                                     std::vector<BoxPair>& pairs) {
   rememberedCount_ = 0;
-  const auto count = static_cast<std::uint32_t>(boxes.size());
-  reserveFor(count);
+  reserveFor(static_cast<std::uint32_t>(boxes.size()));
   // The sweep estimates its cost from the boxes' extents along each axis; the grid sizes its
   // cells by their larger sides. When the last call took the grid (a pile: the sweep
-  // declines), one pass gathers both, and whether every box lies within its fat box; else the
-  // grid's pass waits until the sweep declines. Either way the same sums in the same order:
-  // only the work depends on the last call.
+  // declines), one pass gathers both; else the grid's pass waits until the sweep declines.
+  // Either way the same sums in the same order: only the work depends on the last call.
   SweepAndPrune::Extents extents;
   real extentSum = 0;
   real maxExtent = 0;
+  const auto addGridExtent = [&extentSum, &maxExtent](const BoundingBox& box) {
+    extentSum += extent(box);
+    maxExtent = std::max(maxExtent, extent(box));
+  };
   const bool gridExpected = lastTookGrid_ || !allowSweep;
-  const bool mayReuse = keep && fatCount_ == count;
-  bool within = false;
-  if (gridExpected && mayReuse)
-    within = gatherExtents<true, real>(boxes, fatBoxes_.data(), extents, extentSum, maxExtent);
-  else if (gridExpected)
-    gatherExtents<false, real>(boxes, nullptr, extents, extentSum, maxExtent);
+  if (gridExpected)
+    gatherExtents<real>(boxes, extents, extentSum, maxExtent);
   else
     for (const BoundingBox& box : boxes) extents.add(box);
   lastTookGrid_ = false;
   if (allowSweep && sweep_.findPairs(boxes, extents, sweepTestsPerBox, pairs)) return;
-  if (!gridExpected) {
-    for (const BoundingBox& box : boxes) {
-      extentSum += extent(box);
-      maxExtent = std::max(maxExtent, extent(box));
-    }
-    within = mayReuse && allWithin(boxes, fatBoxes_.data());
-  }
+  if (!gridExpected)
+    for (const BoundingBox& box : boxes) addGridExtent(box);
   lastTookGrid_ = true;
-  if (!keep) {
-    findPairsInGrid(boxes, extentSum, maxExtent, pairs);
-    return;
-  }
-  if (!within && mayReuse && findStrays(boxes)) {
-    ++fatCalls_;
-    filterWithStrays(boxes, pairs);
-    return;
-  }
-  if (!within) findFatPairs(boxes, extentSum, maxExtent);
-  ++fatCalls_;
-  const std::size_t kept = keepOverlappingFatPairs<false>(boxes);
-  appendPairs(pairs, candidates_.data(), kept, count);
+  findPairsInGrid(boxes, extentSum, maxExtent, pairs);
 }
 
 namespace {
@@ -348,139 +276,19 @@ void BroadPhase::reserveFor(std::uint32_t count) {
   for (auto* buffer : {&cellOfBox_, &sortedBoxes_, &slotOfBox_, &oversized_})
     buffer->reserve(count);
   candidates_.reserve(2 * std::size_t{count} + 64);
-  fatBoxes_.reserve(count);
-  // (A pile of circles packed tight: about 5 fat pairs a box, with fatMarginPerCell.)
-  fatPairs_.reserve(6 * std::size_t{count} + 64);
   cellX_.reserve(count);
   cellY_.reserve(count);
   sweep_.reserve(count);
-  strays_.reserve(fatStraysLimit);
   reservedCount_ = count;
-}
-
-void BroadPhase::findFatPairs(std::span<const BoundingBox> boxes, real extentSum, real maxExtent) {
-  const auto count = static_cast<std::uint32_t>(boxes.size());
-  // The margin: a share of the cell the grid would choose for these boxes (findPairsInGrid).
-  // Fat boxes that served no call but the one that found them (boxes moving farther than
-  // the margin in a step) only cost: the next few searches go without a margin (the
-  // candidates are then the pairs themselves, which still serve while no box changes).
-  if (fatCount_ == count && fatCalls_ == 1 && fatMargin_ > 0) fatPlainSearches_ = fatBackOff;
-  real margin = fatMarginPerCell * cellSideFor(extentSum, maxExtent, count);
-  if (fatPlainSearches_ > 0) {
-    --fatPlainSearches_;
-    margin = 0;
-  }
-  if (!(margin < realMax)) margin = 0;  // an infinite cell (an infinite box among them)
-  fatBoxes_.resize(count);
-  BoundingBox* const fat = fatBoxes_.data();
-  // The grid sizes its cells by the fat boxes as stored (rounded): it must never meet a box
-  // larger than its cells without knowing (see findPairsInGrid's oversized boxes).
-  real fatSum = 0;
-  real fatMax = 0;
-  const Vector2 grow{margin, margin};
-  for (std::uint32_t i = 0; i < count; ++i) {
-    fat[i] = {boxes[i].lower - grow, boxes[i].upper + grow};
-    fatSum += extent(fat[i]);
-    fatMax = std::max(fatMax, extent(fat[i]));
-  }
-  // The dense grid's candidates buffer as large as the fat pairs may be (it would double,
-  // sized for the pairs of boxes, when the fat pairs outgrow that).
-  if (candidates_.size() < fatPairs_.capacity()) candidates_.resize(fatPairs_.capacity());
-  fatPairs_.clear();
-  findPairsInGrid(fatBoxes_, fatSum, fatMax, fatPairs_);
-  sortFatPairs(count);
-  fatCount_ = count;
-  fatCalls_ = 0;
-  fatMargin_ = margin;
-}
-
-void BroadPhase::sortFatPairs(std::uint32_t count) {
-  // By first index, then by second: two stable counting sorts (by second, then by first),
-  // through the candidates buffer, with one count per box for each key.
-  const std::size_t total = fatPairs_.size();
-  // (The candidates buffer grows with the fat pairs' capacity: geometrically.)
-  if (candidates_.size() < total) candidates_.resize(fatPairs_.capacity());
-  cellCursor_.assign(2 * (std::size_t{count} + 1), 0);
-  std::uint32_t* const bySecond = cellCursor_.data();
-  std::uint32_t* const byFirst = bySecond + count + 1;
-  BoxPair* const pairs = fatPairs_.data();
-  BoxPair* const other = candidates_.data();
-  for (std::size_t k = 0; k < total; ++k) {
-    ++bySecond[pairs[k].second + 1];
-    ++byFirst[pairs[k].first + 1];
-  }
-  for (std::uint32_t i = 0; i < count; ++i) {
-    bySecond[i + 1] += bySecond[i];
-    byFirst[i + 1] += byFirst[i];
-  }
-  for (std::size_t k = 0; k < total; ++k) other[bySecond[pairs[k].second]++] = pairs[k];
-  for (std::size_t k = 0; k < total; ++k) pairs[byFirst[other[k].first]++] = other[k];
-}
-
-template <bool withStrays>
-std::size_t BroadPhase::keepOverlappingFatPairs(std::span<const BoundingBox> boxes) {
-  // Every box lies within its fat box, so every overlapping pair is a fat pair: each fat pair
-  // is written at the end of the candidates buffer and kept (the end advanced) when its boxes
-  // overlap, without a branch (as in the dense grid). The order is the fat pairs'.
-  const std::size_t total = fatPairs_.size();  // (the sort sized the candidates buffer)
-  BoxPair* const out = candidates_.data();
-  const BoxPair* const in = fatPairs_.data();
-  const BoundingBox* const all = boxes.data();
-  std::size_t n = 0;
-  for (std::size_t k = 0; k < total; ++k) {
-    const std::uint64_t word = loadPair(in + k);
-    const auto first = static_cast<std::uint32_t>(word >> firstShift);
-    const auto second = static_cast<std::uint32_t>(word >> (32 - firstShift));
-    storePair(out + n, word);
-    const std::size_t overlaps = OverlapTest<real>(all[first])(all[second]);
-    if constexpr (withStrays)  // (a stray's pairs are found anew)
-      n += overlaps & std::size_t{(strayMarks_[first] | strayMarks_[second]) == 0};
-    else
-      n += overlaps;
-  }
-  return n;
-}
-
-bool BroadPhase::findStrays(std::span<const BoundingBox> boxes) {
-  strays_.clear();  // (reserved for fatStraysLimit by reserveFor)
-  const BoundingBox* const fat = fatBoxes_.data();
-  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
-    if (withinFat(boxes[i], fat[i])) continue;
-    if (strays_.size() == fatStraysLimit) return false;
-    strays_.push_back(i);
-  }
-  return true;
-}
-
-void BroadPhase::filterWithStrays(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
-  // A stray's kept candidates may miss its pairs now: they are left out, and its pairs are
-  // found among all boxes (a pair of two strays once, from the lower one), then sorted and
-  // merged, so the output is what a search would have given.
-  const auto count = static_cast<std::uint32_t>(boxes.size());
-  if (strayMarks_.size() < count) strayMarks_.resize(count, 0);
-  for (const std::uint32_t i : strays_) strayMarks_[i] = 1;
-  strayPairs_.clear();
-  for (const std::uint32_t i : strays_) {
-    const OverlapTest<real> overlapsStray(boxes[i]);
-    for (std::uint32_t j = 0; j < count; ++j)
-      if (j != i && (strayMarks_[j] == 0 || j > i) && overlapsStray(boxes[j]))
-        strayPairs_.push_back({std::min(i, j), std::max(i, j)});
-  }
-  const auto byIndex = [](const BoxPair& p, const BoxPair& q) {
-    return p.first != q.first ? p.first < q.first : p.second < q.second;
-  };
-  std::sort(strayPairs_.begin(), strayPairs_.end(), byIndex);
-  const std::size_t kept = keepOverlappingFatPairs<true>(boxes);
-  for (const std::uint32_t i : strays_) strayMarks_[i] = 0;
-  makeRoom(pairs, kept + strayPairs_.size(), count);
-  std::merge(candidates_.data(), candidates_.data() + kept, strayPairs_.begin(), strayPairs_.end(),
-             std::back_inserter(pairs), byIndex);
 }
 
 void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, real extentSum, real maxExtent,
                                  std::vector<BoxPair>& pairs) {
   const auto count = static_cast<std::uint32_t>(boxes.size());
-  const real cellSize = cellSideFor(extentSum, maxExtent, count);
+  // Cells as small as the largest box allows (about one box per cell for similar sizes), but
+  // no larger than twice the mean: rare big boxes are handled as oversized instead.
+  const real meanExtent = extentSum / static_cast<real>(count);
+  const real cellSize = std::max(std::min(maxExtent, 2 * meanExtent), realEpsilon);
 
   // Cell coordinates of the regular boxes, and the rectangle of cells they span.
   cellOfBox_.resize(count);
@@ -667,7 +475,9 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
   }
   // (Grown geometrically, as the zero-filled output was: a count of pairs that creeps up must
   // not reallocate the output at every new largest count.)
-  appendPairs(pairs, out, n, count);
+  if (pairs.size() + n > pairs.capacity())
+    pairs.reserve(std::max({pairs.size() + n, 2 * pairs.capacity(), 2 * std::size_t{count} + 64}));
+  pairs.insert(pairs.end(), out, out + n);
 }
 
 void BroadPhase::findPairsInHashedGrid(std::span<const BoundingBox> boxes,

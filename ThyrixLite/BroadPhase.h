@@ -38,17 +38,6 @@ struct BoxColumns {
 ///
 /// The output order depends only on the input, so runs are reproducible. Buffers are kept
 /// between calls: once warmed up with as many boxes, finding pairs allocates nothing.
-///
-/// A caller that steps a world (findPairs() with moved bits) gets the grid's pairs from
-/// candidates kept between calls (temporal coherence, a "Verlet list"): the grid is searched
-/// for "fat" boxes, each box enlarged by fatMarginPerCell of a cell on every side, and the
-/// overlapping pairs of fat boxes are kept, sorted by first then second index. While every
-/// box lies within its fat box, each of its overlaps is such a pair: a call tests only these,
-/// in their order. A few boxes out of their fat boxes (strays: one fast body crossing a crowd
-/// at rest) are tested against every box instead, their pairs merged into the order; the grid
-/// is searched again once more boxes than fatStraysLimit have left their fat boxes or the
-/// count has changed. The output is therefore the grid's pairs sorted by first then second
-/// index, whenever the candidates were found: it still depends only on the input.
 class BroadPhase {
  public:
   /// Up to this many boxes, every pair is tested directly (and remembered, see above).
@@ -58,13 +47,11 @@ class BroadPhase {
   /// up to smallCount boxes.
   void findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
 
-  /// The same pairs as findPairs(boxes, pairs), for a caller that calls once a step with boxes
-  /// that move a little. Up to smallCount boxes, in the same order and faster when few boxes
-  /// moved: a box whose bit in @p moved is 0 (bit `i % 64` of word `i / 64` for box i) is
-  /// promised to be the same as in the last call (same index, same corners), so its overlaps
-  /// with other such boxes are not tested again (the promise is only used when the last call
-  /// had as many boxes; otherwise every pair is tested). Above, the sweep's pairs in its order,
-  /// or the grid's ordered by first then second index, from the kept candidates (see above).
+  /// The same pairs in the same order as findPairs(boxes, pairs), faster when few boxes moved:
+  /// a box whose bit in @p moved is 0 (bit `i % 64` of word `i / 64` for box i) is promised to
+  /// be the same as in the last call (same index, same corners), so its overlaps with other
+  /// such boxes are not tested again. The promise is only used when the last call had as many
+  /// boxes, and up to smallCount boxes; otherwise every pair is tested.
   void findPairs(std::span<const BoundingBox> boxes, std::span<const std::uint64_t> moved,
                  std::vector<BoxPair>& pairs);
 
@@ -85,18 +72,6 @@ class BroadPhase {
   /// about sqrt(n).
   static constexpr real sweepTestsPerBox = 4;
 
-  /// The kept candidates' fat boxes are the boxes enlarged by this share of the grid's cell side
-  /// on every side (measured on piles of circles, the cell a circle's box: 0.15 to 0.3 served
-  /// equally; smaller margins are left sooner, larger ones give more candidates to test).
-  static constexpr real fatMarginPerCell = real(0.25);
-  /// Fat boxes that served only the call that found them (boxes moving farther than the
-  /// margin in a step): the next this many searches use no margin.
-  static constexpr std::uint32_t fatBackOff = 8;
-  /// Up to this many boxes out of their fat boxes are tested against every box, each call,
-  /// instead of searching the grid again (a search costs about as much as testing some tens of
-  /// boxes against a thousand).
-  static constexpr std::uint32_t fatStraysLimit = 8;
-
  private:
   void findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint64_t moved, bool remembered,
                          std::vector<BoxPair>& pairs);
@@ -108,23 +83,7 @@ class BroadPhase {
   [[gnu::noinline]]
 #endif
   void
-  findPairsAmongMany(std::span<const BoundingBox> boxes, bool keep, std::vector<BoxPair>& pairs);
-  /// Searches the grid for the fat boxes of @p boxes (see fatMarginPerCell), whose extents'
-  /// sum and largest are @p extentSum and @p maxExtent, into fatBoxes_ and fatPairs_.
-  void findFatPairs(std::span<const BoundingBox> boxes, real extentSum, real maxExtent);
-  /// Puts fatPairs_ (of @p count boxes) in order by first index, then by second.
-  void sortFatPairs(std::uint32_t count);
-  /// Writes to the front of candidates_, in their order, the pairs of fatPairs_ whose
-  /// @p boxes overlap, and returns their number; with @p withStrays, without those of the
-  /// boxes marked in strayMarks_.
-  template <bool withStrays>
-  std::size_t keepOverlappingFatPairs(std::span<const BoundingBox> boxes);
-  /// Lists in strays_ the boxes of @p boxes out of their fat boxes; false (the list cut
-  /// short) when there are more than fatStraysLimit.
-  bool findStrays(std::span<const BoundingBox> boxes);
-  /// The kept candidates' overlapping pairs without the strays', merged in order with the
-  /// strays' pairs found by testing them against every box, appended to @p pairs.
-  void filterWithStrays(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
+  findPairsAmongMany(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
   void findPairsInGrid(std::span<const BoundingBox> boxes, real extentSum, real maxExtent,
                        std::vector<BoxPair>& pairs);
   void findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::int64_t lowX,
@@ -158,17 +117,6 @@ class BroadPhase {
   std::vector<std::uint32_t> oversized_;    // boxes larger than a cell
   std::vector<std::uint32_t> slotOfBox_;    // position of each box in sortedBoxes_ (dense)
   std::vector<BoxPair> candidates_;         // the dense grid's candidate pairs (only grows)
-
-  // Kept candidates (findPairs() with moved bits, in the grid).
-  std::vector<BoundingBox> fatBoxes_;     // the boxes enlarged by fatMargin_ when searched
-  std::vector<BoxPair> fatPairs_;         // the overlapping pairs of fatBoxes_, in order
-  std::uint32_t fatCount_ = 0;            // boxes of fatBoxes_ (0: nothing kept)
-  std::uint32_t fatCalls_ = 0;            // calls served since the search
-  std::uint32_t fatPlainSearches_ = 0;    // searches left without a margin (fatBackOff)
-  real fatMargin_ = 0;                    // the margin of fatBoxes_
-  std::vector<std::uint32_t> strays_;     // boxes out of their fat boxes, by index
-  std::vector<std::uint8_t> strayMarks_;  // 1 for a stray, else 0 (one per box)
-  std::vector<BoxPair> strayPairs_;       // the strays' overlapping pairs
 
   SweepAndPrune sweep_;        // boxes along a line
   bool lastTookGrid_ = false;  // the last call of more than smallCount boxes used the grid
