@@ -125,7 +125,6 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
   objectContactCursor_.push_back(0);
   multiBodies_.push_back(dynamic_cast<MultiBodyObject*>(&object));
   hasMultiBodies_ = hasMultiBodies_ || multiBodies_.back() != nullptr;
-  listAfterSolve_ = customObjects_.empty() && !hasMultiBodies_;
   object.onRegistered(*this);
 }
 
@@ -164,11 +163,12 @@ void Simulator::advanceTime() {
   // objects' contact lists before the solve ends: they are written once, after it, with the
   // forces, instead of here and again for the forces (two passes over 160 bytes a contact,
   // the second from the last-level cache). After the step the lists are the same.
-  if (!listAfterSolve_) indexContacts();
+  const bool listsAfter = listsAfterSolve();
+  if (!listsAfter) indexContacts();
   applyMouseForce();
   computeDerivativesWithoutContacts();
   solveContacts();
-  if (listAfterSolve_) indexContacts();
+  if (listsAfter) indexContacts();
   for (const std::uint32_t i : customObjects_) objects[i].control();  // the others do nothing
   integrator.integrateExcept(objects, customObjects_, timestep_);
   ++stepCount_;
@@ -205,7 +205,6 @@ void Simulator::eraseContacts() {
   contacts.items_.clear();
   contactsComplete_ = false;
   clearContactLists();
-  listsCurrent_ = false;
   resetCounts();  // (the list is empty: every contact is counted)
   countsComplete_ = true;
 }

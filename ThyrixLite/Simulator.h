@@ -416,11 +416,10 @@ class Simulator : public World {
   bool previousValid_ = false;     // previousContacts_ is the last detection's, complete
   bool previousIndexed_ = false;   // previousOrder_ and previousSortedKeys_ are up to date
   bool contactsSolved_ = false;    // the solver wrote the forces of `contacts`
+  bool previousSolved_ = false;    // previousContacts_ carries its solve's forces (warm start)
   // Core shapes only (no object's own hooks, no articulated agent): advanceTime() indexes the
   // contacts after solveContacts(), as nothing reads the lists before.
-  bool listAfterSolve_ = true;
-  bool listsCurrent_ = false;    // indexContacts() ran since the last eraseContacts()
-  bool previousSolved_ = false;  // previousContacts_ carries its solve's forces (warm start)
+  bool listsAfterSolve() const { return customObjects_.empty() && !hasMultiBodies_; }
   // The objects that do not keep PhysicalObject's step hooks, in registration order (the
   // others' hooks are called without virtual calls).
   std::vector<std::uint32_t> customObjects_;

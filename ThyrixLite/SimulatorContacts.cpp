@@ -525,7 +525,6 @@ void Simulator::indexContacts() {
     objectContactCursor_[i] = 0;
     begin = end;
   }
-  listsCurrent_ = true;
   // The counted objects are the listed ones now (and none is counted).
   std::swap(listedObjects_, countedObjects_);
   listedCount_ = countedCount_;

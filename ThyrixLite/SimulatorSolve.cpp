@@ -154,8 +154,9 @@ void Simulator::solveContacts() {
   // The contacts keep their forces: next step's warm start reads them there.
   for (std::size_t k = 0; k < contacts.size(); ++k) contacts.items_[k].force = rows_[k].force;
   // Lists made after the solve (advanceTime() with core shapes) take the forces from the
-  // contacts; objectContacts_ is then the last step's, seen by no object.
-  if (listsCurrent_)
+  // contacts; objectContacts_ is then the last step's, seen by no object. (No object is
+  // listed then: eraseContacts() cleared the lists, and only indexContacts() fills them.)
+  if (listedCount_ != 0)
     for (ContactInfo& info : objectContacts_) info.force = rows_[info.index].force;
   updateTactileSensors();
 }
