@@ -10,6 +10,9 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if defined(THYRIX_AVX_DISPATCH)
+#include <immintrin.h>
+#endif
 
 // Unrolling a loop by two, where the compiler takes the request (GCC and Clang); others
 // (MSVC would warn about an unknown pragma) unroll as they see fit.
@@ -417,6 +420,51 @@ template <bool turning, class Row, class Turning>
                                              real* forces, real* direction, const real* changes) {
   conjugateRows<turning>(n, beta, rows, turns, velocity, omega, forces, direction, changes);
 }
+
+/// conjugateRows without turning, in double with AVX: what a row does apart from its bodies
+/// (its step, direction, clamp and force) four rows at a time, in one register each, then
+/// the four rows' pushes one after the other, in row order. Each row's values go through the
+/// same operations as in conjugateRows, and each body's velocity takes the rows' pushes in
+/// the same order: the same bits (about 20 instructions a row in the plain loop, 13 here).
+/// A template on the real type, so that a float build never instantiates the double code.
+template <class Real, class Row, class Turning>
+[[gnu::target("avx")]] void conjugateRowsPackedAvx(std::size_t n, Real beta, const Row* rows,
+                                                   const Turning* turns, Vector2* velocity,
+                                                   Real* omega, Real* forces, Real* direction,
+                                                   const Real* changes) {
+  std::size_t p = 0;
+  if constexpr (std::is_same_v<Real, double>) {
+    // push() for a row whose change is in both halves of @p amount: the same operations.
+    const auto pushRow = [velocity](const Row& row, __m128d amount) {
+      const auto coordinates = [](const Vector2& v) { return reinterpret_cast<const Real*>(&v); };
+      Real* const a = reinterpret_cast<Real*>(&at(velocity, row.a));
+      const __m128d byA = _mm_mul_pd(_mm_loadu_pd(coordinates(row.pushA)), amount);
+      const __m128d byB = _mm_mul_pd(_mm_loadu_pd(coordinates(row.pushB)), amount);
+      _mm_storeu_pd(a, _mm_sub_pd(_mm_loadu_pd(a), byA));
+      Real* const b = reinterpret_cast<Real*>(&at(velocity, row.b));
+      _mm_storeu_pd(b, _mm_add_pd(_mm_loadu_pd(b), byB));
+    };
+    const __m256d betas = _mm256_set1_pd(beta);
+    const __m256d signs = _mm256_set1_pd(-0.0);
+    for (; p + 4 <= n; p += 4) {
+      const __m256d step = _mm256_mul_pd(betas, _mm256_loadu_pd(direction + p));
+      _mm256_storeu_pd(direction + p, _mm256_add_pd(step, _mm256_loadu_pd(changes + p)));
+      const __m256d force = _mm256_loadu_pd(forces + p);
+      // max(step, -f) as conjugateRows writes it: -f where step < -f, else step (NaN too).
+      const __m256d change = _mm256_max_pd(_mm256_xor_pd(force, signs), step);
+      _mm256_storeu_pd(forces + p, _mm256_add_pd(force, change));
+      // Each row's change in both halves of a register: rows 0 and 2, then 1 and 3.
+      const __m256d evens = _mm256_unpacklo_pd(change, change);
+      const __m256d odds = _mm256_unpackhi_pd(change, change);
+      pushRow(rows[p], _mm256_castpd256_pd128(evens));
+      pushRow(rows[p + 1], _mm256_castpd256_pd128(odds));
+      pushRow(rows[p + 2], _mm256_extractf128_pd(evens, 1));
+      pushRow(rows[p + 3], _mm256_extractf128_pd(odds, 1));
+    }
+  }
+  conjugateRows<false>(n - p, beta, rows + p, turns, velocity, omega, forces + p, direction + p,
+                       changes + p);
+}
 #endif
 
 }  // namespace
@@ -438,6 +486,12 @@ template <bool turning>
 void GaussSeidelSolver::conjugateStep(real beta) {
 #if defined(THYRIX_AVX_DISPATCH)
   if (processorHasAvx()) {
+    if constexpr (!turning) {
+      conjugateRowsPackedAvx<real>(rows_.size(), beta, rows_.data(), turning_.data(),
+                                   velocities_.data(), omegas_.data(), forces_.data(),
+                                   direction_.data(), changes_.data());
+      return;
+    }
     conjugateRowsAvx<turning>(rows_.size(), beta, rows_.data(), turning_.data(), velocities_.data(),
                               omegas_.data(), forces_.data(), direction_.data(), changes_.data());
     return;
