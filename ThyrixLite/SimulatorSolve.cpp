@@ -26,7 +26,6 @@ void Simulator::solveContacts() {
   // Whichever way this returns, the contacts' forces are this solve's (zero where none is
   // needed): the next step's warm start may read them.
   contactsSolved_ = true;
-  previousHint_ = 0;  // the warm start's, carried from island to island
   if (contacts.empty() && internal_.empty()) {
     updateTactileSensors();
     return;
@@ -57,6 +56,16 @@ void Simulator::solveContacts() {
   ContactConstraint* const rows = rows_.data();
   // Gauss-Seidel sweeps up and down the load's path (see ContactConstraint::order).
   const Vector2 up = settings_.gaussSeidelHeightOrder ? -gravity_ : Vector2{};
+  // The warm start's forces, found here while the contact is at hand (a second pass over the
+  // contacts, island by island, waited on the cache): the last step's contact after the one
+  // found last is usually the one (detection keeps the order), tried without a call;
+  // searchPreviousForce() looks further. A contact's force depends only on its identity, not
+  // on the order of the search. Rows that no island solve starts from get theirs back to 0
+  // (satisfied islands, solveIsland()); Baraff's islands ignore them.
+  const bool warmStart = settings_.warmStart && previousSolved_;
+  const GlobalContactInfo* const previous = previousContacts_.data();
+  const std::size_t previousCount = previousContacts_.size();
+  std::size_t hint = 0;
   for (std::size_t k = 0; k < contactCount; ++k) {
     const GlobalContactInfo& c = contacts.items_[k];
     touch(c.bodyA);
@@ -81,6 +90,16 @@ void Simulator::solveContacts() {
     row.target = depthFactor[c.depth > 0 ? 1 : 0] * c.depth / dt;
     row.force = 0;
     row.order = dot(c.point, up);
+    if (warmStart) {
+      if (hint < previousCount && previous[hint].sameContactAs(c)) {
+        row.force = previous[hint].force;
+        ++hint;
+      } else {
+        std::size_t found = hint;
+        row.force = searchPreviousForce(c, k, found);
+        hint = found;
+      }
+    }
   }
   // A joint limit is a row of its object alone; its Jacobian is the object's business.
   for (std::size_t j = 0; j < internal_.size(); ++j) {
@@ -267,7 +286,10 @@ void Simulator::solveIsland(std::span<const std::uint32_t> island) {
     const ContactConstraint& row = rows_[k];
     return row.normalVelocity(bodies_[row.a], bodies_[row.b]) >= row.target;
   });
-  if (satisfied) return;
+  if (satisfied) {
+    for (const std::uint32_t k : island) rows_[k].force = 0;  // (the warm start's, unused)
+    return;
+  }
   ++statistics_.solvedIslands;
   if (solverKind_ == ContactSolverKind::Baraff &&
       island.size() <= static_cast<std::size_t>(settings_.baraffMaxContacts)) {
@@ -276,23 +298,8 @@ void Simulator::solveIsland(std::span<const std::uint32_t> island) {
     if (solved) return;
     ++statistics_.baraffFallbacks;
   }
-  if (settings_.warmStart && previousSolved_) {
-    // The forces alone: Gauss-Seidel adds their velocities as it copies the island. The last
-    // step's contact after the one found last is usually the one (detection keeps the order):
-    // tried here, without a call; searchPreviousForce() looks further.
-    const GlobalContactInfo* const previous = previousContacts_.data();
-    const std::size_t previousCount = previousContacts_.size();
-    for (const std::uint32_t k : island) {
-      const GlobalContactInfo& c = contacts.items_[k];
-      const std::size_t hint = previousHint_;
-      if (hint < previousCount && previous[hint].sameContactAs(c)) {
-        previousHint_ = hint + 1;
-        rows_[k].force = previous[hint].force;
-      } else {
-        rows_[k].force = searchPreviousForce(c, k, previousHint_);
-      }
-    }
-  }
+  // The rows hold the warm start's forces (solveContacts()), or 0: Gauss-Seidel adds their
+  // velocities as it copies the island.
   statistics_.gaussSeidelSweeps +=
       static_cast<std::size_t>(gaussSeidel_.solve(island, rows_, bodies_, settings_));
 }
