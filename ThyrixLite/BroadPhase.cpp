@@ -123,10 +123,10 @@ Vector2 centreInCells(const BoundingBox& box, Real cellSize) {
   return (box.lower + box.upper) * real(0.5) / cellSize;
 }
 
-/// Adds every box of @p boxes, in index order, to @p extents (the sweep's) and to the sum
-/// @p extentSum and the largest @p maxExtent of their extents (the grid's, see extent()).
-/// A template: a float build never instantiates the double branch.
-template <class Real>
+/// Adds every box of @p boxes, in index order, to @p extents (the sweep's) and, with
+/// @p forGrid, to the sum @p extentSum and the largest @p maxExtent of their extents (the
+/// grid's, see extent()). A template: a float build never instantiates the double branch.
+template <class Real, bool forGrid>
 void gatherExtents(std::span<const BoundingBox> boxes, SweepAndPrune::Extents& extents,
                    Real& extentSum, Real& maxExtent) {
 #if defined(__SSE2__)
@@ -150,9 +150,11 @@ void gatherExtents(std::span<const BoundingBox> boxes, SweepAndPrune::Extents& e
       sums = _mm_add_pd(sums, sides);
       low = _mm_min_pd(lower, low);
       high = _mm_max_pd(upper, high);
-      const __m128d side = _mm_max_sd(_mm_unpackhi_pd(sides, sides), sides);
-      sum = _mm_add_sd(sum, side);
-      most = _mm_max_sd(side, most);
+      if constexpr (forGrid) {
+        const __m128d side = _mm_max_sd(_mm_unpackhi_pd(sides, sides), sides);
+        sum = _mm_add_sd(sum, side);
+        most = _mm_max_sd(side, most);
+      }
     }
     extents.sumX = _mm_cvtsd_f64(sums);
     extents.sumY = _mm_cvtsd_f64(_mm_unpackhi_pd(sums, sums));
@@ -167,8 +169,10 @@ void gatherExtents(std::span<const BoundingBox> boxes, SweepAndPrune::Extents& e
 #endif
   for (const BoundingBox& box : boxes) {
     extents.add(box);
-    extentSum += extent(box);
-    maxExtent = std::max(maxExtent, extent(box));
+    if constexpr (forGrid) {
+      extentSum += extent(box);
+      maxExtent = std::max(maxExtent, extent(box));
+    }
   }
 }
 
@@ -209,9 +213,9 @@ void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes,
   };
   const bool gridExpected = lastTookGrid_ || !allowSweep;
   if (gridExpected)
-    gatherExtents<real>(boxes, extents, extentSum, maxExtent);
+    gatherExtents<real, true>(boxes, extents, extentSum, maxExtent);
   else
-    for (const BoundingBox& box : boxes) extents.add(box);
+    gatherExtents<real, false>(boxes, extents, extentSum, maxExtent);
   lastTookGrid_ = false;
   if (allowSweep && sweep_.findPairs(boxes, extents, sweepTestsPerBox, pairs)) return;
   if (!gridExpected)

@@ -2,11 +2,53 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace thyrix {
+namespace {
 
-void SweepAndPrune::reserve(std::uint32_t count) { entries_.reserve(std::size_t{count} + 1); }
+/// A box's lower and upper sides along @p axis (0 x, 1 y).
+template <int axis>
+real lowerOf(const BoundingBox& box) {
+  if constexpr (axis == 0)
+    return box.lower.x;
+  else
+    return box.lower.y;
+}
+template <int axis>
+real upperOf(const BoundingBox& box) {
+  if constexpr (axis == 0)
+    return box.upper.x;
+  else
+    return box.upper.y;
+}
+
+/// The box at byte offset @p offset from @p base (the order holds offsets: reading a box then
+/// takes no multiplication).
+inline const BoundingBox& boxAt(const BoundingBox* base, std::size_t offset) {
+  return *reinterpret_cast<const BoundingBox*>(reinterpret_cast<const char*>(base) + offset);
+}
+
+constexpr std::size_t stride = sizeof(BoundingBox);  // from one box's offset to the next's
+
+/// Whether the pair of boxes at offsets @p i and @p j is marked in @p never (see
+/// setNeverPaired()).
+inline bool marked(const std::uint64_t* never, std::size_t i, std::size_t j) {
+  const std::size_t low = std::min(i, j) / stride;
+  const std::size_t gap = std::max(i, j) / stride - low;  // (never 0: the boxes differ)
+  return gap <= 64 && ((never[low] >> (gap - 1)) & 1) != 0;
+}
+
+}  // namespace
+
+// The sweep out of line: its loop gets the registers to itself (inlined, it kept the marks'
+// address and a box index on the stack).
+#if defined(__GNUC__)
+#define THYRIX_SWEEP_NO_INLINE [[gnu::noinline]]
+#else
+#define THYRIX_SWEEP_NO_INLINE
+#endif
+
+void SweepAndPrune::reserve(std::uint32_t count) { order_.reserve(count); }
 
 bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, real testsPerBox,
                               std::vector<BoxPair>& pairs) {
@@ -29,102 +71,156 @@ bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, const Extents&
   const int axis = testsX <= testsY || std::isnan(testsY) ? 0 : 1;
   if (!((axis == 0 ? testsX : testsY) <= testsPerBox)) return false;
 
-  // The entries, in the last call's order when it held as many boxes along the same axis,
-  // else in index order. No coordinate on this axis is NaN (its estimate would be NaN): the
-  // sort's order is strict and total. A NaN on the other axis fails every comparison, so such
-  // a box pairs with nothing, as with BoundingBox::overlaps().
-  const auto count = static_cast<std::uint32_t>(boxes.size());
-  const bool keepOrder = axis == axis_ && entries_.size() == std::size_t{count} + 1;
-  if (!keepOrder) {
-    entries_.resize(std::size_t{count} + 1);
-    for (std::uint32_t i = 0; i < count; ++i) entries_[i].index = i;
+  // The order of the last call when it held as many boxes along the same axis, else the
+  // index order. No coordinate on this axis is NaN or infinite (its estimate would be NaN):
+  // the sort's order is strict and total. A NaN on the other axis fails every comparison, so
+  // such a box pairs with nothing, as with BoundingBox::overlaps().
+  if (axis != axis_ || order_.size() != boxes.size()) {
+    order_.resize(boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) order_[i] = i * stride;
+    orderHeld_ = false;
   }
   axis_ = axis;
-  if (axis == 0)
-    load<0>(boxes);
-  else
-    load<1>(boxes);
-  sort(count);
-  // A sentinel after the last entry starts beyond every box (the coordinates on the axis are
-  // finite, or the estimate would be NaN): the scan below needs no end test.
-  constexpr real beyond = std::numeric_limits<real>::infinity();
-  entries_[count] = {beyond, beyond, beyond, beyond, count};
-
-  // Each box against the boxes after it that start before it ends on the axis; the first that
-  // starts beyond ends the scan (all later ones start later still). The scan's condition is
-  // one side of the overlap on the axis; the other side is tested, as are both on the other
-  // axis, so the pairs are exactly those BoundingBox::overlaps() accepts. Past a few times the
-  // expected number of tests (clusters far apart look evenly spread), the sweep gives up.
-  const std::size_t start = pairs.size();
-  const std::size_t n = count;
-  const std::size_t maxTests = static_cast<std::size_t>(3 * testsPerBox * static_cast<real>(n));
-  const bool done = neverPaired_.size() == n ? sweep<true>(n, maxTests, neverPaired_.data(), pairs)
-                                             : sweep<false>(n, maxTests, nullptr, pairs);
-  if (!done) pairs.resize(start);
-  return done;
-}
-
-template <bool filtered>
-bool SweepAndPrune::sweep(std::size_t n, std::size_t maxTests, const std::uint64_t* never,
-                          std::vector<BoxPair>& pairs) const {
-  std::size_t tests = 0;
-  const Entry* const entries = entries_.data();
-  for (std::size_t k = 0; k < n; ++k) {
-    const Entry p = entries[k];
-    std::size_t m = k + 1;
-    for (; entries[m].lower <= p.upper; ++m) {
-      const Entry& q = entries[m];
-      const std::uint32_t low = std::min(p.index, q.index);
-      const std::uint32_t high = std::max(p.index, q.index);
-      // Marked pairs first: where the marks serve (a chain), most boxes in reach on the axis
-      // are such pairs, overlapping or not. (high - low - 1 wraps to a large number for
-      // equal indices, which never occur.)
-      if constexpr (filtered)
-        if (high - low - 1 < 64 && ((never[low] >> (high - low - 1)) & 1) != 0) continue;
-      if (p.lower <= q.upper && p.crossLower <= q.crossUpper && q.crossLower <= p.crossUpper)
-        pairs.push_back({low, high});
-    }
-    tests += m - k - 1;
-    if (tests > maxTests) return false;
-  }
-  return true;
+  // Past a few times the expected number of tests (clusters far apart look evenly spread),
+  // the sweep gives up.
+  const std::size_t maxTests =
+      static_cast<std::size_t>(3 * testsPerBox * static_cast<real>(boxes.size()));
+  return axis == 0 ? sortAndSweep<0>(boxes, maxTests, pairs)
+                   : sortAndSweep<1>(boxes, maxTests, pairs);
 }
 
 template <int axis>
-void SweepAndPrune::load(std::span<const BoundingBox> boxes) {
-  // One loop per axis: no choice of coordinates per box.
-  Entry* const entries = entries_.data();
-  for (std::size_t k = 0; k < boxes.size(); ++k) {
-    const std::uint32_t index = entries[k].index;
-    const BoundingBox& box = boxes[index];
-    if constexpr (axis == 0)
-      entries[k] = {box.lower.x, box.upper.x, box.lower.y, box.upper.y, index};
-    else
-      entries[k] = {box.lower.y, box.upper.y, box.lower.x, box.upper.x, index};
+bool SweepAndPrune::sortAndSweep(std::span<const BoundingBox> boxes, std::size_t maxTests,
+                                 std::vector<BoxPair>& pairs) {
+  const std::size_t start = pairs.size();
+  const bool filtered = neverPaired_.size() == boxes.size();
+  const auto sweepOnce = [&] {
+    return filtered ? sweep<axis, true>(boxes, maxTests, neverPaired_.data(), pairs)
+                    : sweep<axis, false>(boxes, maxTests, nullptr, pairs);
+  };
+  // Sorted first, unless the last call found its order unchanged: then the sweep checks the
+  // order as it goes. Either way the sweep that counts runs over the sorted order.
+  const bool sortedFirst = !orderHeld_;
+  if (sortedFirst) orderHeld_ = !sort<axis>(boxes);
+  Outcome outcome = sweepOnce();
+  // Out of order, or out of tests on an order not known to be sorted: sorted, then swept
+  // again if the order changed (else the tests were the sorted order's, and so is the outcome).
+  if (outcome != Outcome::done && !sortedFirst) {
+    orderHeld_ = !sort<axis>(boxes);
+    if (!orderHeld_) {
+      pairs.resize(start);
+      outcome = sweepOnce();
+    }
   }
+  if (outcome == Outcome::done) return true;
+  pairs.resize(start);
+  return false;
 }
 
-void SweepAndPrune::sort(std::size_t n) {
-  const auto before = [](const Entry& a, const Entry& b) {
-    return a.lower < b.lower || (a.lower == b.lower && a.index < b.index);
+namespace {
+
+/// The scan of the box at offset @p i (findPairs()): the boxes from @p at on in the order, up
+/// to @p end, while they start before box i ends on @p axis, each tested unless marked in
+/// @p never (when @p filtered); their pairs appended to @p pairs. Returns the number of boxes
+/// scanned (the tests). Out of line: the sweep's loop keeps its registers for a chain's
+/// links, which need no call.
+template <int axis, bool filtered>
+#if defined(__GNUC__)
+[[gnu::noinline]]
+#endif
+std::size_t
+scan(const BoundingBox* base, std::size_t i, const std::size_t* at, const std::size_t* end,
+     const std::uint64_t* never, std::vector<BoxPair>& pairs) {
+  const BoundingBox& p = boxAt(base, i);
+  const real upper = upperOf<axis>(p);
+  const std::size_t* const from = at;
+  for (; at != end && lowerOf<axis>(boxAt(base, *at)) <= upper; ++at) {
+    const std::size_t j = *at;
+    // Marked pairs first: where the marks serve (a chain), most boxes in reach on the axis
+    // are such pairs, overlapping or not.
+    if constexpr (filtered)
+      if (marked(never, i, j)) continue;
+    const BoundingBox& q = boxAt(base, j);
+    if (lowerOf<axis>(p) <= upperOf<axis>(q) && lowerOf<1 - axis>(p) <= upperOf<1 - axis>(q) &&
+        lowerOf<1 - axis>(q) <= upperOf<1 - axis>(p))
+      pairs.push_back({static_cast<std::uint32_t>(std::min(i, j) / stride),
+                       static_cast<std::uint32_t>(std::max(i, j) / stride)});
+  }
+  return static_cast<std::size_t>(at - from);
+}
+
+}  // namespace
+
+template <int axis, bool filtered>
+THYRIX_SWEEP_NO_INLINE SweepAndPrune::Outcome SweepAndPrune::sweep(
+    std::span<const BoundingBox> boxes, std::size_t maxTests, const std::uint64_t* never,
+    std::vector<BoxPair>& pairs) const {
+  const std::size_t* const order = order_.data();
+  const std::size_t* const end = order + order_.size();
+  const BoundingBox* const base = boxes.data();
+  // Each box against the boxes after it that start before it ends on the axis; the first that
+  // starts beyond ends the scan (all later ones start later still). The scan's condition is
+  // one side of the overlap on the axis; the other side is tested, as are both on the other
+  // axis, so the pairs are exactly those BoundingBox::overlaps() accepts.
+  std::size_t tests = 0;
+  for (const std::size_t* at = order + 1; at < end; ++at) {  // box at[-1] against at on
+    const std::size_t i = at[-1];
+    const std::size_t next = *at;
+    const real lower = lowerOf<axis>(boxAt(base, i));
+    const real upper = upperOf<axis>(boxAt(base, i));
+    const real nextLower = lowerOf<axis>(boxAt(base, next));
+    // In order: the next box starts later, or as early with a higher index.
+    if (!(lower < nextLower)) [[unlikely]]
+      if (nextLower < lower || next < i) return Outcome::unsorted;
+    if (!(nextLower <= upper)) continue;
+    // A chain's link: the next box in the order, and no other, in reach, and the two
+    // neighbours in the chain, marked. Else the scan.
+    if constexpr (filtered) {
+      const std::size_t low = std::min(i, next);
+      if (std::max(i, next) - low == stride && (never[low / stride] & 1) != 0 &&
+          (at + 1 == end || !(lowerOf<axis>(boxAt(base, at[1])) <= upper))) {
+        ++tests;
+        if (tests > maxTests) return Outcome::gaveUp;
+        continue;
+      }
+    }
+    tests += scan<axis, filtered>(base, i, at, end, never, pairs);
+    if (tests > maxTests) return Outcome::gaveUp;
+  }
+  return Outcome::done;
+}
+
+template <int axis>
+bool SweepAndPrune::sort(std::span<const BoundingBox> boxes) {
+  const BoundingBox* const base = boxes.data();
+  const auto before = [base](std::size_t a, std::size_t b) {
+    const real lowerA = lowerOf<axis>(boxAt(base, a));
+    const real lowerB = lowerOf<axis>(boxAt(base, b));
+    return lowerA < lowerB || (lowerA == lowerB && a < b);
   };
   // Insertion sort from the last order: a few moves when the boxes moved a little. Past a
   // budget of moves (the order changed a lot), a full sort finishes the job in n log n.
-  Entry* const entries = entries_.data();
+  std::size_t* const order = order_.data();
+  const std::size_t n = order_.size();
   std::size_t budget = 4 * n + 64;
+  bool moved = false;
   for (std::size_t k = 1; k < n; ++k) {
-    if (!before(entries[k], entries[k - 1])) continue;
-    const Entry e = entries[k];
+    const std::size_t e = order[k];
+    if (!before(e, order[k - 1])) continue;
+    moved = true;
     std::size_t m = k;
-    for (; m > 0 && before(e, entries[m - 1]); --m) entries[m] = entries[m - 1];
-    entries[m] = e;
-    const std::size_t moved = k - m;
-    if (moved > budget) {
-      std::sort(entries, entries + n, before);
-      return;
+    for (; m > 0 && before(e, order[m - 1]); --m) order[m] = order[m - 1];
+    order[m] = e;
+    const std::size_t shifted = k - m;
+    if (shifted > budget) {
+      std::sort(order, order + n, before);
+      return true;
     }
-    budget -= moved;
+    budget -= shifted;
   }
+  return moved;
 }
+
+#undef THYRIX_SWEEP_NO_INLINE
 
 }  // namespace thyrix

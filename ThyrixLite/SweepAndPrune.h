@@ -6,6 +6,7 @@
 #include <ThyrixLite/BoundingBox.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -21,8 +22,12 @@ namespace thyrix {
 /// axis serves, and declines piles (BroadPhase then uses its grid).
 ///
 /// The order of the last call is the start of the next sort (insertion sort): boxes that moved
-/// a little need only a few swaps. The sorted order is a strict total order of the boxes, so
-/// the output depends only on the input, never on the previous call.
+/// a little need only a few swaps. When the last call's order needed no change, the sweep
+/// runs on it at once and checks each box against the next as it goes, and only sorts (and
+/// sweeps again) when the order has changed: a chain whose boxes keep their order is read
+/// once. The sorted order is a strict total order of the boxes, so the output depends only on
+/// the input, never on the previous call. The sweep reads the boxes where they are (the order
+/// is a list of indices): no copy of them is made.
 ///
 /// A box with a NaN corner overlaps nothing (every comparison with it is false), as in
 /// BoundingBox::overlaps(): the sweep runs along an axis without NaN, or declines. Buffers
@@ -77,29 +82,34 @@ class SweepAndPrune {
   void setNeverPaired(std::span<const std::uint64_t> bits) { neverPaired_ = bits; }
 
  private:
-  /// A box as the sweep reads it: its interval on the sweep axis, then on the other axis.
-  struct Entry {
-    real lower;
-    real upper;
-    real crossLower;
-    real crossUpper;
-    std::uint32_t index;
+  /// How a sweep ended.
+  enum class Outcome {
+    done,      // every pair found
+    gaveUp,    // past its budget of tests
+    unsorted,  // the order was not the sorted one (only a sweep that checks it, see below)
   };
-  /// Reads @p boxes along @p axis (0 x, 1 y) into entries_, in the order of the indices
-  /// entries_ holds.
+  /// Puts order_ in sweep order along @p axis (0 x, 1 y): by lower side, then by index.
+  /// Returns whether any index moved.
   template <int axis>
-  void load(std::span<const BoundingBox> boxes);
-  /// Puts the first @p n entries in sweep order: by lower side, then by index.
-  void sort(std::size_t n);
-  /// The sweep over the first @p n sorted entries (findPairs()), leaving out the pairs
-  /// @p never marks (when @p filtered); false when it gives up past @p maxTests tests.
-  template <bool filtered>
-  bool sweep(std::size_t n, std::size_t maxTests, const std::uint64_t* never,
-             std::vector<BoxPair>& pairs) const;
+  bool sort(std::span<const BoundingBox> boxes);
+  /// The sweep along @p axis over the boxes in order_ (findPairs()), leaving out the pairs
+  /// @p never marks (when @p filtered); gives up past @p maxTests tests. Each box is also
+  /// compared with the next in order_: unsorted when that is out of order (the pairs
+  /// appended so far are then the caller's to drop).
+  template <int axis, bool filtered>
+  Outcome sweep(std::span<const BoundingBox> boxes, std::size_t maxTests,
+                const std::uint64_t* never, std::vector<BoxPair>& pairs) const;
+  /// Sorts if needed and sweeps along @p axis (findPairs()): true when done.
+  template <int axis>
+  bool sortAndSweep(std::span<const BoundingBox> boxes, std::size_t maxTests,
+                    std::vector<BoxPair>& pairs);
 
-  /// The boxes in sweep order (the last call's, until sorted), then a sentinel.
-  std::vector<Entry> entries_;
+  /// The boxes in sweep order (the last call's, until sorted), as their offsets in bytes
+  /// in the array (index * sizeof(BoundingBox), which compare as the indices do).
+  std::vector<std::size_t> order_;
   int axis_ = -1;  // the last call's axis (0 x, 1 y), -1 before the first call
+  // Whether the last call's sort moved nothing: this call then sweeps before sorting.
+  bool orderHeld_ = false;
   std::span<const std::uint64_t> neverPaired_;  // see setNeverPaired()
 };
 
