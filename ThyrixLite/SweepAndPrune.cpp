@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace thyrix {
 namespace {
@@ -158,12 +159,16 @@ THYRIX_SWEEP_NO_INLINE SweepAndPrune::Outcome SweepAndPrune::sweep(
   const std::size_t* const order = order_.data();
   const std::size_t* const end = order + order_.size();
   const BoundingBox* const base = boxes.data();
+  if (order_.size() < 2) return Outcome::done;
   // Each box against the boxes after it that start before it ends on the axis; the first that
   // starts beyond ends the scan (all later ones start later still). The scan's condition is
   // one side of the overlap on the axis; the other side is tested, as are both on the other
   // axis, so the pairs are exactly those BoundingBox::overlaps() accepts.
   std::size_t tests = 0;
-  for (const std::size_t* at = order + 1; at < end; ++at) {  // box at[-1] against at on
+  // Box at[-1] against the boxes from at on; false to stop, with `outcome` set. With notLast
+  // true, at is not the last place (the loop's; the last pair is taken after it): at[1] is.
+  Outcome outcome = Outcome::done;
+  const auto visit = [&](const std::size_t* at, auto notLast) {
     const std::size_t i = at[-1];
     const std::size_t next = *at;
     const real lower = lowerOf<axis>(boxAt(base, i));
@@ -171,23 +176,33 @@ THYRIX_SWEEP_NO_INLINE SweepAndPrune::Outcome SweepAndPrune::sweep(
     const real nextLower = lowerOf<axis>(boxAt(base, next));
     // In order: the next box starts later, or as early with a higher index.
     if (!(lower < nextLower)) [[unlikely]]
-      if (nextLower < lower || next < i) return Outcome::unsorted;
-    if (!(nextLower <= upper)) continue;
+      if (nextLower < lower || next < i) {
+        outcome = Outcome::unsorted;
+        return false;
+      }
+    if (!(nextLower <= upper)) return true;
     // A chain's link: the next box in the order, and no other, in reach, and the two
-    // neighbours in the chain, marked. Else the scan.
-    if constexpr (filtered) {
-      const std::size_t low = std::min(i, next);
-      if (std::max(i, next) - low == stride && (never[low / stride] & 1) != 0 &&
-          (at + 1 == end || !(lowerOf<axis>(boxAt(base, at[1])) <= upper))) {
+    // neighbours in the chain, marked. Else the scan. (A test that cannot make the tests
+    // run away: they are compared with the budget after the scans and at the end.)
+    if constexpr (filtered && decltype(notLast)::value) {
+      // (Neighbours: next - i is stride or its negative, as an unsigned number.)
+      const std::size_t step = next - i;
+      const bool neighbours = step == stride || step == 0 - stride;
+      if (neighbours && (never[std::min(i, next) / stride] & 1) != 0 &&
+          !(lowerOf<axis>(boxAt(base, at[1])) <= upper)) {
         ++tests;
-        if (tests > maxTests) return Outcome::gaveUp;
-        continue;
+        return true;
       }
     }
     tests += scan<axis, filtered>(base, i, at, end, never, pairs);
-    if (tests > maxTests) return Outcome::gaveUp;
-  }
-  return Outcome::done;
+    if (tests <= maxTests) return true;
+    outcome = Outcome::gaveUp;
+    return false;
+  };
+  for (const std::size_t* at = order + 1; at < end - 1; ++at)
+    if (!visit(at, std::true_type{})) return outcome;
+  if (!visit(end - 1, std::false_type{})) return outcome;
+  return tests <= maxTests ? Outcome::done : Outcome::gaveUp;
 }
 
 template <int axis>
