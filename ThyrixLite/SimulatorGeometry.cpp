@@ -2,6 +2,7 @@
 /// @brief Phase 2 of a step, first part: the shapes' geometry and grid boxes (what moved).
 #include <ThyrixLite/Border.h>
 #include <ThyrixLite/Simulator.h>
+#include <Tools/ProcessorFeatures.h>
 
 #include <algorithm>
 #include <bit>
@@ -153,9 +154,11 @@ inline void Simulator::addGeometryBox(const ShapeGeometry& g, Vector2& boxMin, V
 #if defined(__GNUC__)
 #define THYRIX_FORCE_INLINE [[gnu::always_inline]] inline
 #define THYRIX_NO_INLINE [[gnu::noinline]]
+#define THYRIX_LAMBDA_FORCE_INLINE __attribute__((always_inline))
 #else
 #define THYRIX_FORCE_INLINE inline
 #define THYRIX_NO_INLINE
+#define THYRIX_LAMBDA_FORCE_INLINE
 #endif
 
 // Recomputes capsule @p s's geometry and grid box, and widens the body box (@p boxMin,
@@ -355,35 +358,39 @@ THYRIX_NO_INLINE void Simulator::updateComposedShape(std::uint32_t s, bool chang
 // registers to themselves: the arrays' addresses loaded once, the body box kept in registers.
 THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool changed,
                                                     bool known) {
-  const Shape* const shapes = shapes_.data();
-  ShapePose* const poses = shapePoses_.data();
-  ShapeGeometry* const geometry = geometry_.data();
-  // The shapes up to the first that moved: their sensors noted, nothing else (a body none of
-  // whose shapes moved keeps its box and reads no shape's box).
-  const std::uint32_t end = state.firstShape + state.shapeCount;
-  std::uint32_t firstMoved = state.firstShape;
-  if (!changed) {
-    for (; firstMoved < end; ++firstMoved) {
-      Primitive& primitive = *shapes[firstMoved].primitive;
-      const ShapePose& pose = poses[firstMoved];
-      if (!sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha) ||
-          geometry[firstMoved].travel != 0)
-        break;
-      if (primitive.sensing_) sensingPrimitives_.push_back(&primitive);
-    }
-    if (firstMoved == end) return;
-  }
-  // From the first moved shape on, the body box is rebuilt, from every shape in order: those
-  // before it are added first, the unmoved ones after it as they come. Known or not, the same
-  // for every shape: the loop in two copies, each with its own constant (measured: a flag read
-  // from the stack twice a shape otherwise).
-  const auto run = [&](auto knownConstant) {
+  // Known or not, the same for every shape: the loops in two copies, each with its own
+  // constant (measured: a flag read from the stack twice a shape otherwise). What they read
+  // comes in as parameters, not captures: the AVX copy below is a call of its own, which read
+  // captures from memory again after each of the loop's byte stores.
+  const auto run = [this](auto knownConstant, const BodyState& body,
+                          bool bodyChanged) THYRIX_LAMBDA_FORCE_INLINE {
     constexpr bool poseKnown = decltype(knownConstant)::value;
+    const Shape* const shapes = shapes_.data();
+    ShapePose* const poses = shapePoses_.data();
+    ShapeGeometry* const geometry = geometry_.data();
+    const std::uint32_t firstShape = body.firstShape;
+    const std::uint32_t end = firstShape + body.shapeCount;
+    // The shapes up to the first that moved: their sensors noted, nothing else (a body none
+    // of whose shapes moved keeps its box and reads no shape's box).
+    std::uint32_t firstMoved = firstShape;
+    if (!bodyChanged) {
+      for (; firstMoved < end; ++firstMoved) {
+        Primitive& primitive = *shapes[firstMoved].primitive;
+        const ShapePose& pose = poses[firstMoved];
+        if (!sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha) ||
+            geometry[firstMoved].travel != 0)
+          break;
+        if (primitive.sensing_) sensingPrimitives_.push_back(&primitive);
+      }
+      if (firstMoved == end) return;
+    }
+    // From the first moved shape on, the body box is rebuilt, from every shape in order:
+    // those before it are added first, the unmoved ones after it as they come.
     std::uint8_t* const shapeMoved = shapeMoved_.data();
     const GridTargets grid = gridTargets();
     Vector2 boxMin{realMax, realMax};
     Vector2 boxMax{-realMax, -realMax};
-    for (std::uint32_t t = state.firstShape; t < firstMoved; ++t)
+    for (std::uint32_t t = firstShape; t < firstMoved; ++t)
       if (shapes[t].type != ShapeType::HalfPlane) addGeometryBox(geometry[t], boxMin, boxMax);
     // A chain's link: a capsule without sensors, placed by its owner, that moved, its half
     // axis at hand (the pose's, or the direction cached by the primitive: no sine or cosine).
@@ -396,8 +403,9 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
       ShapeGeometry& g = geometry[s];
       const Vector2 r = primitive.r;
       const real alpha = primitive.alpha;
+      // (Turned first: a chain's links turn at every step, and need no other test then.)
       const bool turned = !sameBits(alpha, pose.alpha);
-      if (!changed && sameBits(r, pose.r) && !turned && g.travel == 0) return false;  // unmoved
+      if (!turned && !bodyChanged && sameBits(r, pose.r) && g.travel == 0) return false;
       Vector2 axis = pose.axis;
       if (!poseKnown || turned) {
         if (alpha != primitive.directionAngle_) return false;  // direction() would compute it
@@ -413,7 +421,7 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
       const Primitive& primitive = *shapes[s].primitive;
       const ShapePose& pose = poses[s];
       const ShapeGeometry& g = geometry[s];
-      if (changed || primitive.sensing_ || shapes[s].type == ShapeType::HalfPlane ||
+      if (bodyChanged || primitive.sensing_ || shapes[s].type == ShapeType::HalfPlane ||
           !sameBits(primitive.r, pose.r) || !sameBits(primitive.alpha, pose.alpha) || g.travel != 0)
         return false;
       addGeometryBox(g, boxMin, boxMax);
@@ -424,21 +432,37 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
         continue;
       Vector2 lower = boxMin;  // (the box stays a local: it leaves registers only here)
       Vector2 upper = boxMax;
-      updateComposedShape(s, changed, poseKnown, lower, upper);
+      updateComposedShape(s, bodyChanged, poseKnown, lower, upper);
       boxMin = lower;
       boxMax = upper;
     }
-    state.object->boxMin = boxMin;
-    state.object->boxMax = boxMax;
+    body.object->boxMin = boxMin;
+    body.object->boxMax = boxMax;
   };
+#if defined(THYRIX_AVX_DISPATCH)
+  // With AVX the same loops in VEX form: the same operations, so the same bits, but its
+  // three-operand instructions need none of SSE2's register copies (a chain's link had 10).
+  const auto runAvx = [&run](auto knownConstant, const BodyState& body, bool bodyChanged)
+      __attribute__((target("avx"))) {
+    run(knownConstant, body, bodyChanged);
+  };
+  if (processorHasAvx()) {
+    if (known)
+      runAvx(std::true_type{}, state, changed);
+    else
+      runAvx(std::false_type{}, state, changed);
+    return;
+  }
+#endif
   if (known)
-    run(std::true_type{});
+    run(std::true_type{}, state, changed);
   else
-    run(std::false_type{});
+    run(std::false_type{}, state, changed);
 }
 
 #undef THYRIX_FORCE_INLINE
 #undef THYRIX_NO_INLINE
+#undef THYRIX_LAMBDA_FORCE_INLINE
 
 void Simulator::updateGeometry() {
   // A new margin changes every shape's geometry; without rest skipping nothing is kept.
