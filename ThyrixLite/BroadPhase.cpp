@@ -176,6 +176,30 @@ void gatherExtents(std::span<const BoundingBox> boxes, SweepAndPrune::Extents& e
   }
 }
 
+#if defined(THYRIX_AVX_DISPATCH)
+/// gatherExtents() in VEX form, chosen at run time: the same operations, so the same bits,
+/// without SSE2's register copies (3 of the sweep's 12 instructions a box).
+template <class Real, bool forGrid>
+[[gnu::target("avx")]] void gatherExtentsAvx(std::span<const BoundingBox> boxes,
+                                             SweepAndPrune::Extents& extents, Real& extentSum,
+                                             Real& maxExtent) {
+  gatherExtents<Real, forGrid>(boxes, extents, extentSum, maxExtent);
+}
+#endif
+
+/// gatherExtents(), in its AVX copy where the processor has it.
+template <class Real, bool forGrid>
+void gatherExtentsFast(std::span<const BoundingBox> boxes, SweepAndPrune::Extents& extents,
+                       Real& extentSum, Real& maxExtent) {
+#if defined(THYRIX_AVX_DISPATCH)
+  if (processorHasAvx()) {
+    gatherExtentsAvx<Real, forGrid>(boxes, extents, extentSum, maxExtent);
+    return;
+  }
+#endif
+  gatherExtents<Real, forGrid>(boxes, extents, extentSum, maxExtent);
+}
+
 }  // namespace
 
 void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
@@ -213,9 +237,9 @@ void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes,
   };
   const bool gridExpected = lastTookGrid_ || !allowSweep;
   if (gridExpected)
-    gatherExtents<real, true>(boxes, extents, extentSum, maxExtent);
+    gatherExtentsFast<real, true>(boxes, extents, extentSum, maxExtent);
   else
-    gatherExtents<real, false>(boxes, extents, extentSum, maxExtent);
+    gatherExtentsFast<real, false>(boxes, extents, extentSum, maxExtent);
   lastTookGrid_ = false;
   if (allowSweep && sweep_.findPairs(boxes, extents, sweepTestsPerBox, pairs)) return;
   if (!gridExpected)
