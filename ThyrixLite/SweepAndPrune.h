@@ -27,7 +27,7 @@ namespace thyrix {
 /// sweeps again) when the order has changed: a chain whose boxes keep their order is read
 /// once. The sorted order is a strict total order of the boxes, so the output depends only on
 /// the input, never on the previous call. The sweep reads the boxes where they are (the order
-/// is a list of indices): no copy of them is made.
+/// is a list of their offsets): no copy of them is made.
 ///
 /// A box with a NaN corner overlaps nothing (every comparison with it is false), as in
 /// BoundingBox::overlaps(): the sweep runs along an axis without NaN, or declines. Buffers
@@ -86,10 +86,10 @@ class SweepAndPrune {
   enum class Outcome {
     done,      // every pair found
     gaveUp,    // past its budget of tests
-    unsorted,  // the order was not the sorted one (only a sweep that checks it, see below)
+    unsorted,  // the order was not the sorted one (found as the sweep goes)
   };
   /// Puts order_ in sweep order along @p axis (0 x, 1 y): by lower side, then by index.
-  /// Returns whether any index moved.
+  /// Returns whether any box moved in the order.
   template <int axis>
   bool sort(std::span<const BoundingBox> boxes);
   /// The sweep along @p axis over the boxes in order_ (findPairs()), leaving out the pairs
@@ -108,7 +108,7 @@ class SweepAndPrune {
   /// in the array (index * sizeof(BoundingBox), which compare as the indices do).
   std::vector<std::size_t> order_;
   int axis_ = -1;  // the last call's axis (0 x, 1 y), -1 before the first call
-  // Whether the last call's sort moved nothing: this call then sweeps before sorting.
+  // Whether the last call found its order sorted: this call then sweeps before sorting.
   bool orderHeld_ = false;
   std::span<const std::uint64_t> neverPaired_;  // see setNeverPaired()
 };
