@@ -307,6 +307,7 @@ void addToEachWrench(Vector3* wrenches, std::size_t count, Real torque, ForceOf 
 void ArticulatedAgentBase::applyForceAtEveryLinkCenterOfMass(Vector2 force) {
   if (!std::isfinite(force.x) || !std::isfinite(force.y)) [[unlikely]]
     refuseLinkForce(base, force, Vector2{});
+  touchLinkWrenches();
   // The torque, the same for every link, as applyLinkForceAtCenterOfMass() computes it.
   addToEachWrench<real>(linkWrenches_.data() + 1, linkWrenches_.size() - 1, cross(Vector2{}, force),
                         [force](std::size_t) { return force; });
@@ -326,12 +327,28 @@ void ArticulatedAgentBase::applyWeight(Vector2 gravity) {
   const std::size_t links = linkWrenches_.size() - 1;
   if (linksWeighAlike_) {  // one weight for all (a uniform chain), without a multiplication each
     const Vector2 weight = bodyMasses_[1] * gravity;
-    addToEachWrench<real>(linkWrenches_.data() + 1, links, torque,
-                          [weight](std::size_t) { return weight; });
+    const auto theWeight = [weight](std::size_t) { return weight; };
+    if (linkWrenchesClear_ && !linkWeightKept_) {
+      // Every link's wrench is zero: keep the one they would all become.
+      Vector3 wrench{};
+      addToEachWrench<real>(&wrench, 1, torque, theWeight);
+      linkWeight_ = wrench;
+      linkWeightKept_ = true;
+      return;
+    }
+    touchLinkWrenches();
+    addToEachWrench<real>(linkWrenches_.data() + 1, links, torque, theWeight);
   } else {
+    touchLinkWrenches();
     addToEachWrench<real>(linkWrenches_.data() + 1, links, torque,
                           weightsOf(bodyMasses_.data() + 1));
   }
+}
+
+void ArticulatedAgentBase::addKeptLinkWeight() {
+  // Each link's wrench is zero: it becomes the kept one, as applyWeight()'s additions made it.
+  std::fill(linkWrenches_.begin() + 1, linkWrenches_.end(), linkWeight_);
+  linkWeightKept_ = false;
 }
 
 void ArticulatedAgentBase::refuseLinkForce(int b, Vector2 force, Vector2 worldPoint) const {

@@ -161,6 +161,7 @@ class ArticulatedAgentBase : public MultiBodyObject {
     if (b < base || b >= linkCount() || !std::isfinite(force.x) || !std::isfinite(force.y) ||
         !std::isfinite(worldPoint.x) || !std::isfinite(worldPoint.y)) [[unlikely]]
       refuseLinkForce(b, force, worldPoint);
+    if (b != base) touchLinkWrenches();
     // A wrench about the body's centre of mass, as ArticulatedBody::solve() takes it.
     Vector3& wrench = linkWrenches_[index(b + 1)];
     wrench.x += cross(worldPoint - body_.centerOfMass(b), force);
@@ -179,6 +180,7 @@ class ArticulatedAgentBase : public MultiBodyObject {
     if (b < base || b >= linkCount() || !std::isfinite(force.x) || !std::isfinite(force.y))
         [[unlikely]]
       refuseLinkForce(b, force, Vector2{});
+    if (b != base) touchLinkWrenches();
     Vector3& wrench = linkWrenches_[index(b + 1)];
     wrench.x += cross(Vector2{}, force);
     wrench.y += force.x;
@@ -246,7 +248,9 @@ class ArticulatedAgentBase : public MultiBodyObject {
   /// The weight in the gravity field @p gravity (Simulator::setGravity()): each link, and the
   /// base unless the agent is `fixed`, gets `mass(b) * gravity` at its own centre of mass, the
   /// same bits as applyLinkForceAtCenterOfMass(b, mass(b) * gravity) for each body b (base
-  /// first), without its checks (the simulator checked the field). One call per step.
+  /// first), without its checks (the simulator checked the field). One call per step. Links
+  /// that weigh alike, with no force given to a link yet, keep their weight as one wrench
+  /// (linkWeightKept_) that the solve takes for every link: no pass over the links.
   void applyWeight(Vector2 gravity) override;
   /// Also checks limitMargin (finite, non-negative) and that every primitive is the agent's own
   /// (an ArticulatedComponent).
@@ -314,6 +318,25 @@ class ArticulatedAgentBase : public MultiBodyObject {
   std::vector<real> bodyMasses_;
   /// Every link has the same mass (and there is one): applyWeight() computes one weight.
   bool linksWeighAlike_ = false;
+  /// No link's wrench in linkWrenches_ has been given anything since the last solve (they are
+  /// zero; the base's may not be).
+  bool linkWrenchesClear_ = true;
+  /// applyWeight() found the links' wrenches clear and their weights equal: it kept the wrench
+  /// each would have, `(0, 0, 0)` plus the weight, in linkWeight_ rather than adding it to
+  /// every one (a pass over the links), and the solve takes it as every link's wrench
+  /// (ArticulatedBody::solve() with a link wrench), the same bits.
+  bool linkWeightKept_ = false;
+  Vector3 linkWeight_;  ///< see linkWeightKept_
+  /// Before a link's wrench is given a force: adds the weight applyWeight() kept, if it did, to
+  /// every link's (the additions in the order applyWeight() would have made them), and notes
+  /// that the links' wrenches are no longer clear.
+  void touchLinkWrenches() {
+    if (linkWeightKept_) [[unlikely]]
+      addKeptLinkWeight();
+    linkWrenchesClear_ = false;
+  }
+  /// touchLinkWrenches()'s addition of the kept weight.
+  void addKeptLinkWeight();
 
  private:
   struct Layout;

@@ -60,14 +60,22 @@ void ArticulatedAgentQuasistatic::computeDerivativesWithoutContacts() {
   // applyConstraintForces() saves them before changing them. The last step's rates are kept
   // for the limits (a swap of buffers, not a copy).
   std::swap(lastRates_, velocities_.jointRates);
-  body_.solve(torques, linkWrenches_, velocities_);
+  if (linkWeightKept_)  // every link's wrench is the weight applyWeight() kept
+    body_.solve(torques, linkWrenches_[0], linkWeight_, velocities_);
+  else
+    body_.solve(torques, linkWrenches_, velocities_);
   freeSaved_ = false;
   v = velocities_.linearVelocity(base);
   omega = velocities_.angularVelocity(base);
 
   externalForce = {};
   externalTorque = 0;
-  std::fill(linkWrenches_.begin(), linkWrenches_.end(), Vector3{});
+  if (linkWrenchesClear_)
+    linkWrenches_[0] = Vector3{};  // the links' are still zero
+  else
+    std::fill(linkWrenches_.begin(), linkWrenches_.end(), Vector3{});
+  linkWrenchesClear_ = true;
+  linkWeightKept_ = false;
   if (limitsActed_) {
     std::fill(limitTorques_.begin(), limitTorques_.end(), real(0));
     limitsActed_ = false;

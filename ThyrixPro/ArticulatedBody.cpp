@@ -211,12 +211,23 @@ void ArticulatedBody::anglesAndAxes(const real* rates, real dt) {
 
 void ArticulatedBody::solve(std::span<const real> jointTorques,
                             std::span<const Vector3> externalWrenches, Output& out) {
-  if (!jointTorques.empty() && jointTorques.size() != q_.size())
-    throw InvalidArgument("ArticulatedBody.jointTorques",
-                          sizeProblem(q_.size(), jointTorques.size()));
+  checkTorques(jointTorques);
   if (!externalWrenches.empty() && externalWrenches.size() != origin_.size())
     throw InvalidArgument("ArticulatedBody.externalWrenches",
                           sizeProblem(origin_.size(), externalWrenches.size()));
+  Wrenches wrenches;
+  wrenches.perBody = externalWrenches.empty() ? nullptr : externalWrenches.data();
+  solveWith(jointTorques, wrenches, out);
+}
+
+void ArticulatedBody::solve(std::span<const real> jointTorques, const Vector3& baseWrench,
+                            const Vector3& linkWrench, Output& out) {
+  solveWith(jointTorques, Wrenches{nullptr, true, baseWrench, linkWrench}, out);
+}
+
+void ArticulatedBody::solveWith(std::span<const real> jointTorques, const Wrenches& wrenches,
+                                Output& out) {
+  checkTorques(jointTorques);
   out.resize(linkCount());
 
   // The inward pass adds the wrenches to the bias terms as it visits the bodies.
@@ -228,7 +239,13 @@ void ArticulatedBody::solve(std::span<const real> jointTorques,
     std::fill(jointTorque_.begin(), jointTorque_.end(), real(0));
     torques = jointTorque_.data();
   }
-  biasAndOutwardPasses<false>(externalWrenches, torques, out);
+  biasAndOutwardPasses<false>(wrenches, torques, out);
+}
+
+void ArticulatedBody::checkTorques(std::span<const real> jointTorques) const {
+  if (!jointTorques.empty() && jointTorques.size() != q_.size())
+    throw InvalidArgument("ArticulatedBody.jointTorques",
+                          sizeProblem(q_.size(), jointTorques.size()));
 }
 
 void ArticulatedBody::checkTestForce(const TestForce& force) const {
@@ -266,7 +283,7 @@ void ArticulatedBody::respond(std::span<const TestForce> forces, std::span<const
   std::fill(jointTorque_.begin(), jointTorque_.end(), real(0));
   for (std::size_t k = 0; k < forces.size(); ++k)
     depositTestForce(forces[k], magnitudes.empty() ? real(1) : magnitudes[k]);
-  biasAndOutwardPasses<true>({}, jointTorque_.data(), out);
+  biasAndOutwardPasses<true>(Wrenches{}, jointTorque_.data(), out);
 }
 
 // --- reading velocities ----------------------------------------------------------------------

@@ -245,6 +245,13 @@ class ArticulatedBody {
   ///         a span is neither empty nor of the right size
   void solve(std::span<const real> jointTorques, std::span<const Vector3> externalWrenches,
              Output& out);
+  /// solve() with the wrench @p baseWrench on the base and the same @p linkWrench on every link
+  /// (the weights of links of equal mass, say), as `(torque about the centre of mass, fx, fy)`:
+  /// the same bits as solve() given an array of those wrenches, without one to fill and read.
+  /// @throws InvalidArgument naming "ArticulatedBody.jointTorques" when @p jointTorques is
+  ///         neither empty nor of the right size
+  void solve(std::span<const real> jointTorques, const Vector3& baseWrench,
+             const Vector3& linkWrench, Output& out);
 
   /// The velocities caused by one test force (Kokkevis): like solve() with that force alone,
   /// but reusing the cached articulated inertias, so it costs one bias pass and one outward
@@ -279,6 +286,21 @@ class ArticulatedBody {
   }
 
  private:
+  /// The external wrenches of a solve (as solve() takes them): one per body, the same on every
+  /// link, or none.
+  struct Wrenches {
+    const Vector3* perBody = nullptr;  ///< body slot s's at s, or null
+    bool uniform = false;              ///< perBody null: `base` on the base, `link` on each link
+    Vector3 base;
+    Vector3 link;
+    /// Whether there are wrenches at all.
+    [[nodiscard]] bool any() const { return perBody != nullptr || uniform; }
+    /// The wrench on the body at @p slot (when any()).
+    [[nodiscard]] const Vector3& at(std::size_t slot) const {
+      if (perBody != nullptr) return perBody[slot];
+      return slot == 0 ? base : link;
+    }
+  };
   /// integrate()'s check of @p out and move of the base.
   void moveBase(const Output& out, real dt);
   /// The first two sweeps of forwardKinematics(): every body's angle, then its axis; with
@@ -316,6 +338,9 @@ class ArticulatedBody {
   static constexpr Vector2 rotated(Vector2 axis, Vector2 v) {
     return {axis.x * v.x - axis.y * v.y, axis.y * v.x + axis.x * v.y};
   }
+  /// Throws InvalidArgument naming "ArticulatedBody.jointTorques" unless @p jointTorques is
+  /// empty or has a torque per joint.
+  void checkTorques(std::span<const real> jointTorques) const;
   void checkTestForce(const TestForce& force) const;
   void depositTestForce(const TestForce& force, real magnitude);
   /// Link @p i's step of the inward inertia pass, given its articulated inertia @p da: sets
@@ -326,35 +351,36 @@ class ArticulatedBody {
   /// @p tau: sets u_i and returns the bias it passes to its parent (about the parent's origin).
   Vector3 passBias(std::size_t i, const Vector3& pa, real tau);
   /// inwardPass<true, false, false>()'s loop over a plain chain (allInChain_) with
-  /// @p wrenches (as solve() takes them, not empty), in SSE2 pairs with the same bits: leaves
+  /// @p wrenches (any()), in SSE2 pairs with the same bits: leaves
   /// the terms it carries to the base in @p inertiaCarried and @p biasCarried and returns true;
   /// false, having done nothing, without SSE2 or for a real type other than double (a
   /// template, so that a float build never instantiates the pairs).
   template <class Real>
-  bool plainChainInwardPass(const Vector3* wrenches, const Real* torques,
+  bool plainChainInwardPass(const Wrenches& wrenches, const Real* torques,
                             SymmetricMatrix3& inertiaCarried, Vector3& biasCarried);
-  /// The inward sweep, leaves to root: the bias pass from @p externalWrenches (as solve()
-  /// takes them, or empty), the joint torques @p torques (one per joint), the forces already in
+  /// The inward sweep, leaves to root: the bias pass from @p wrenches (as solve() takes
+  /// them, or none), the joint torques @p torques (one per joint), the forces already in
   /// bias_, and the articulated inertias too when @p withInertias, with the joint damping when
   /// @p damped (else all c_i are zero). When @p general every body's bias_ slot is read
   /// (respond()'s test forces) and every articulated inertia stored; otherwise only the slots
   /// that gather the terms of children (gathers_) are read (the others are not), and only the
   /// base's inertia is kept.
   template <bool withInertias, bool damped, bool general>
-  void inwardPass(std::span<const Vector3> externalWrenches, const real* torques);
+  void inwardPass(const Wrenches& wrenches, const real* torques);
   /// Zeroes the slots of @p perBody (bias_ or articulatedInertia_) that gather the terms of
   /// children (gathers_): the only ones an inward pass without deposits reads.
   template <class T>
   void clearGatheringSlots(std::vector<T>& perBody) const {
     for (const std::size_t slot : gatheringSlots_) perBody[slot] = T{};
   }
-  /// The bias pass (leaves to root) from @p externalWrenches (or none), the joint torques
+  /// The bias pass (leaves to root) from @p wrenches (or none), the joint torques
   /// @p torques, the forces in bias_ (in every slot when @p general, see inwardPass()), with
   /// the articulated inertias if they are stale, then the outward pass (root to leaves),
   /// writing @p out.
   template <bool general>
-  void biasAndOutwardPasses(std::span<const Vector3> externalWrenches, const real* torques,
-                            Output& out);
+  void biasAndOutwardPasses(const Wrenches& wrenches, const real* torques, Output& out);
+  /// solve()'s passes, after the check of @p jointTorques.
+  void solveWith(std::span<const real> jointTorques, const Wrenches& wrenches, Output& out);
 
   real baseMass_;
   real baseInertia_;

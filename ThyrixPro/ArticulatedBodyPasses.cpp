@@ -92,7 +92,7 @@ inline Vector3 ArticulatedBody::passBias(std::size_t i, const Vector3& pa, real 
 }
 
 template <class Real>
-bool ArticulatedBody::plainChainInwardPass(const Vector3* wrenches, const Real* torques,
+bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real* torques,
                                            SymmetricMatrix3& inertiaCarried, Vector3& biasCarried) {
 #if defined(__SSE2__)
   if constexpr (std::is_same_v<Real, double>) {
@@ -121,7 +121,9 @@ bool ArticulatedBody::plainChainInwardPass(const Vector3* wrenches, const Real* 
     const ArticulatedLink* const links = links_.data();
     const Vector2* const centres = comOffset_.data() + 1;  // link i's at i
     const Vector2* const shifts = shift_.data();
-    const Vector3* const linkWrenches = wrenches + 1;  // link i's at i
+    // Link i's wrench at i, or one for every link (stride 0: read again from one place).
+    const Vector3* const linkWrenches = wrenches.uniform ? &wrenches.link : wrenches.perBody + 1;
+    const std::size_t wrenchStride = wrenches.uniform ? 0 : 1;
     JointTerms* const terms = terms_.data();
     Real* const jointBias = jointBias_.data();
     // The carried inertia and bias.
@@ -164,7 +166,7 @@ bool ArticulatedBody::plainChainInwardPass(const Vector3* wrenches, const Real* 
       yyZz = _mm_sub_pd(dyyZz, _mm_mul_pd(beta, b));
       yz = _mm_sub_sd(dyz, _mm_mul_sd(beta, _mm_unpackhi_pd(b, b)));
       // passBias(i, carried - translateForceBack(w, c), tau)
-      const Vector3& w = linkWrenches[i];
+      const Vector3& w = linkWrenches[i * wrenchStride];
       const __m128d wf = pairOf(w.y);
       const Real pn = moment - (w.x + crossOf(centre, wf));
       const __m128d pf = _mm_sub_pd(force, wf);
@@ -187,7 +189,7 @@ bool ArticulatedBody::plainChainInwardPass(const Vector3* wrenches, const Real* 
 }
 
 template <bool withInertias, bool damped, bool general>
-void ArticulatedBody::inwardPass(std::span<const Vector3> externalWrenches, const real* torques) {
+void ArticulatedBody::inwardPass(const Wrenches& wrenches, const real* torques) {
   // Leaves to root: reverse index order visits children before parents. A link's terms go to
   // its parent's slot, except when the parent is the next link visited (slot i: within a
   // limb, the usual case): they are then carried to it in registers. Each link waits for its
@@ -200,13 +202,12 @@ void ArticulatedBody::inwardPass(std::span<const Vector3> externalWrenches, cons
   // subtracted from the children's terms when the slot is empty, which gives the same bits as
   // adding its negation. Only the base's articulated inertia is needed afterwards: the links'
   // are stored when `general` (for articulatedInertia()).
-  const Vector3* wrenches = externalWrenches.empty() ? nullptr : externalWrenches.data();
+  const bool anyWrench = wrenches.any();
   const auto ownBias = [&](std::size_t slot) {
-    return wrenches == nullptr ? Vector3{} : -translateForceBack(wrenches[slot], comOffset_[slot]);
+    return !anyWrench ? Vector3{} : -translateForceBack(wrenches.at(slot), comOffset_[slot]);
   };
   const auto carriedBias = [&](std::size_t slot, const Vector3& carried) {
-    return wrenches == nullptr ? carried
-                               : carried - translateForceBack(wrenches[slot], comOffset_[slot]);
+    return !anyWrench ? carried : carried - translateForceBack(wrenches.at(slot), comOffset_[slot]);
   };
   SymmetricMatrix3 inertiaCarried;
   Vector3 biasCarried;
@@ -223,17 +224,17 @@ void ArticulatedBody::inwardPass(std::span<const Vector3> externalWrenches, cons
     }
     Vector3 pa = biasCarried;
     if constexpr (decltype(withWrenches)::value)
-      pa = biasCarried - translateForceBack(wrenches[self], comOffset_[self]);
+      pa = biasCarried - translateForceBack(wrenches.at(self), comOffset_[self]);
     biasCarried = passBias(i, pa, torques[i]);
   };
   // A plain chain (every link in a chain): a loop without a test per link.
   const bool plainChain = !general && allInChain_;
   bool done = false;  // by plainChainInwardPass()
   if constexpr (withInertias && !damped)
-    done = plainChain && wrenches != nullptr &&
+    done = plainChain && anyWrench &&
            plainChainInwardPass<real>(wrenches, torques, inertiaCarried, biasCarried);
   if (plainChain && !done) {
-    if (wrenches != nullptr) {
+    if (anyWrench) {
       for (std::size_t i = links_.size(); i-- > 0;) chainStep(i, std::true_type{});
     } else {
       for (std::size_t i = links_.size(); i-- > 0;) chainStep(i, std::false_type{});
@@ -306,20 +307,20 @@ void ArticulatedBody::computeArticulatedInertias() {
 // --- the passes of solve() and respond() ------------------------------------------------------
 
 template <bool general>
-void ArticulatedBody::biasAndOutwardPasses(std::span<const Vector3> externalWrenches,
-                                           const real* torques, Output& out) {
+void ArticulatedBody::biasAndOutwardPasses(const Wrenches& wrenches, const real* torques,
+                                           Output& out) {
   // Leaves to root. The articulated inertias and the bias forces are both built from the
   // leaves, and link i's bias needs only its own terms: when the configuration has changed,
   // one sweep does both, so the two dependency chains run side by side.
   if (inertiasStale_) {
     clearGatheringSlots(articulatedInertia_);
     if (dampedJoints_ > 0)
-      inwardPass<true, true, general>(externalWrenches, torques);
+      inwardPass<true, true, general>(wrenches, torques);
     else
-      inwardPass<true, false, general>(externalWrenches, torques);
+      inwardPass<true, false, general>(wrenches, torques);
     inertiasStale_ = false;
   } else {
-    inwardPass<false, false, general>(externalWrenches, torques);
+    inwardPass<false, false, general>(wrenches, torques);
   }
 
   // The free-floating base: nothing acts on it from outside the tree, so 0 = D^A_0 v_0 + p^A_0
@@ -362,9 +363,7 @@ void ArticulatedBody::biasAndOutwardPasses(std::span<const Vector3> externalWren
   }
 }
 
-template void ArticulatedBody::biasAndOutwardPasses<false>(std::span<const Vector3>, const real*,
-                                                           Output&);
-template void ArticulatedBody::biasAndOutwardPasses<true>(std::span<const Vector3>, const real*,
-                                                          Output&);
+template void ArticulatedBody::biasAndOutwardPasses<false>(const Wrenches&, const real*, Output&);
+template void ArticulatedBody::biasAndOutwardPasses<true>(const Wrenches&, const real*, Output&);
 
 }  // namespace thyrix
