@@ -409,7 +409,6 @@ class Simulator : public World {
   std::vector<std::uint32_t> previousOrder_;       // by shape A (then B if many): positions
   std::vector<std::uint64_t> previousSortedKeys_;  // each previousOrder_ entry's shapes, A then B
   std::size_t previousCursor_ = 0;                 // previousContacts_ after the last pair found
-  std::size_t previousHint_ = 0;                   // the warm start's next guess
   real geometryFraction_ = 0;      // speculativeFraction the cached margins were computed with
   real geometryTravel_ = 0;        // speculativeTravel the cached travels were computed with
   bool contactsComplete_ = false;  // `contacts` holds exactly one detection's contacts
