@@ -338,9 +338,10 @@ class Simulator : public World {
   /// Advances listStamp_ for a new detection.
   void nextListStamp();
   /// The force the last step's contact with @p contact's identity (shapes and feature) ended
-  /// with, or 0, when it is not at the warm start's first guess (solveIsland(): the contact
-  /// after the last found). Looks at @p position, @p contact's own place in `contacts`, then
-  /// searches; @p hint is left just past the contact found.
+  /// with, or 0, when it is not at the warm start's first guess @p hint (solveContacts(): the
+  /// contact after the last found). Looks just after and before the guess, at @p position,
+  /// @p contact's own place in `contacts`, then searches; @p hint is left just past the
+  /// contact found (or unchanged).
   [[nodiscard]] real searchPreviousForce(const GlobalContactInfo& contact, std::size_t position,
                                          std::size_t& hint);
   void clearContactLists();

@@ -143,11 +143,22 @@ Simulator::PreviousRange Simulator::previousContactsOf(std::uint32_t shapeA, std
 
 real Simulator::searchPreviousForce(const GlobalContactInfo& contact, std::size_t position,
                                     std::size_t& hint) {
-  // Detection lists the contacts in nearly the last step's order: after the contact after the
-  // last found (solveIsland()), the one at the same place, before a search.
-  if (position < previousContacts_.size() && previousContacts_[position].sameContactAs(contact)) {
+  // Detection lists the contacts in nearly the last step's order: after the contact at the
+  // hint (the one after the last found, tried by the caller), the one after it (the one at the
+  // hint has gone, or two are swapped), the one before the last found (the second of two
+  // swapped: the hint stays), the one at the same place, before a search.
+  const GlobalContactInfo* const previous = previousContacts_.data();
+  const std::size_t count = previousContacts_.size();
+  const std::size_t next = hint + 1;
+  if (next < count && previous[next].sameContactAs(contact)) {
+    hint = next + 1;
+    return previous[next].force;
+  }
+  if (hint >= 2 && hint - 2 < count && previous[hint - 2].sameContactAs(contact))
+    return previous[hint - 2].force;
+  if (position < count && previous[position].sameContactAs(contact)) {
     hint = position + 1;
-    return previousContacts_[position].force;
+    return previous[position].force;
   }
   const PreviousRange range = previousContactsOf(contact.shapeA, contact.shapeB);
   for (std::uint32_t k = range.begin; k < range.end; ++k) {
