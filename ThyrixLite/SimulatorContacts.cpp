@@ -339,50 +339,35 @@ inline Simulator::ContactPair* Simulator::notesFor(std::size_t count) {
   return contactPairs_.data();
 }
 
-namespace {
-
-/// noteContactPair's chaining of a pair's first point at @p position (@p chains: the shapes'
-/// PairChains; @p stamp: the list's), a template only to take the private chain type.
-template <class Chain, class Note>
-void chainPair(Note* notes, Chain* chains, std::uint32_t stamp, std::uint32_t position,
-               std::uint32_t shapeA, std::uint32_t noPair) {
-  // Without a branch (whether a circle's pair is its first as shape A is random; GCC made
-  // the selects a branch): a mask of ones when the chain goes on. A shape's first pair writes
-  // its own link (noPair, as it is).
-  Chain& chain = chains[shapeA];
-  const std::uint32_t on = 0u - std::uint32_t{chain.stamp == stamp};
-  notes[(chain.last & on) | (position & ~on)].nextOfA = (position & on) | (noPair & ~on);
-  chain.first = (chain.first & on) | (position & ~on);
-  chain.last = position;
-  chain.pairsAndRun = ((chain.pairsAndRun + 1) & on) | (1u & ~on);
-  chain.stamp = stamp;
-}
-
-/// countContact on the counts @p count and the list @p counted of @p countedCount bodies.
-void countBodies(std::uint32_t* count, std::uint32_t* counted, std::size_t& countedCount,
-                 std::uint32_t bodyA, std::uint32_t bodyB) {
-  // Each body listed at its first contact without a branch (which contact is a body's first is
-  // random to the predictor): written in the next place, which is kept if it was.
-  counted[countedCount] = bodyA;
-  countedCount += std::size_t{count[bodyA]++ == 0};
-  counted[countedCount] = bodyB;
-  countedCount += std::size_t{count[bodyB]++ == 0};
-}
-
-}  // namespace
-
 // Inline: every contact appended is noted (SimulatorPreviousContacts.cpp reads the notes).
 inline void Simulator::noteContactPair(ContactPair* notes, std::uint32_t position,
                                        std::uint32_t shapeA, std::uint32_t shapeB, bool first) {
   // A detection visits each pair once and appends its points one after another: the first
   // point's pair is chained to shape A's last one, or begins its chain.
   notes[position] = {pairKey(shapeA, shapeB), noPair};
-  if (first) chainPair(notes, pairChains_.data(), listStamp_, position, shapeA, noPair);
+  if (!first) return;
+  // Without a branch (whether a circle's pair is its first as shape A is random; GCC made
+  // the selects a branch): a mask of ones when the chain goes on. A shape's first pair writes
+  // its own link (noPair, as it is).
+  PairChain& chain = pairChains_[shapeA];
+  const std::uint32_t on = 0u - std::uint32_t{chain.stamp == listStamp_};
+  notes[(chain.last & on) | (position & ~on)].nextOfA = (position & on) | (noPair & ~on);
+  chain.first = (chain.first & on) | (position & ~on);
+  chain.last = position;
+  chain.pairsAndRun = ((chain.pairsAndRun + 1) & on) | (1u & ~on);
+  chain.stamp = listStamp_;
 }
 
 // Inline: every contact appended is counted.
 inline void Simulator::countContact(std::uint32_t bodyA, std::uint32_t bodyB) {
-  countBodies(objectContactCursor_.data(), countedObjects_.data(), countedCount_, bodyA, bodyB);
+  // Each body listed at its first contact without a branch (which contact is a body's first is
+  // random to the predictor): written in the next place, which is kept if it was.
+  std::uint32_t* const count = objectContactCursor_.data();
+  std::uint32_t* const counted = countedObjects_.data();
+  counted[countedCount_] = bodyA;
+  countedCount_ += std::size_t{count[bodyA]++ == 0};
+  counted[countedCount_] = bodyB;
+  countedCount_ += std::size_t{count[bodyB]++ == 0};
 }
 
 void Simulator::resetCounts() {
@@ -454,18 +439,9 @@ inline bool Simulator::circlesInReach(std::uint32_t shapeA, std::uint32_t shapeB
 
 void Simulator::addCirclePairs(std::span<const CirclePair> pairs) {
   // collideCircles' one point, stored without a Manifold in between (zeroed, then read back
-  // in a loop over its points). The members read for every contact are held in locals: the
-  // contact's stores (pointers among them) and the list's growth (a call) would otherwise
-  // have them read again for each.
+  // in a loop over its points).
   auto position = static_cast<std::uint32_t>(contacts.items_.size());
   ContactPair* const notes = notesFor(position + pairs.size());
-  std::vector<GlobalContactInfo>& items = contacts.items_;
-  const Shape* const shapes = shapes_.data();
-  PairChain* const chains = pairChains_.data();
-  const std::uint32_t stamp = listStamp_;
-  std::uint32_t* const count = objectContactCursor_.data();
-  std::uint32_t* const counted = countedObjects_.data();
-  std::size_t countedCount = countedCount_;
   for (const CirclePair& pair : pairs) {
     Vector2 normal;
     ManifoldPoint p;
@@ -473,17 +449,9 @@ void Simulator::addCirclePairs(std::span<const CirclePair> pairs) {
                                     {pair.centreBx, pair.centreBy}, pair.radiusB, pair.margin,
                                     normal, p))
       continue;
-    // appendContact and noteContactPair, on the locals.
-    const Shape& a = shapes[pair.shapeA];
-    const Shape& b = shapes[pair.shapeB];
-    items.push_back({a.object, b.object, a.primitive, b.primitive, a.body, b.body, pair.shapeA,
-                     pair.shapeB, p.feature, 0, p.point, normal, p.depth});
-    countBodies(count, counted, countedCount, a.body, b.body);
-    notes[position] = {pairKey(pair.shapeA, pair.shapeB), noPair};
-    chainPair(notes, chains, stamp, position, pair.shapeA, noPair);
-    ++position;
+    appendContact(pair.shapeA, pair.shapeB, p, normal);
+    noteContactPair(notes, position++, pair.shapeA, pair.shapeB, true);
   }
-  countedCount_ = countedCount;
 }
 
 void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
