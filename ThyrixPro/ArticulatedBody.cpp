@@ -222,12 +222,12 @@ void ArticulatedBody::solve(std::span<const real> jointTorques,
 
 void ArticulatedBody::solve(std::span<const real> jointTorques, const Vector3& baseWrench,
                             const Vector3& linkWrench, Output& out) {
+  checkTorques(jointTorques);
   solveWith(jointTorques, Wrenches{nullptr, true, baseWrench, linkWrench}, out);
 }
 
 void ArticulatedBody::solveWith(std::span<const real> jointTorques, const Wrenches& wrenches,
                                 Output& out) {
-  checkTorques(jointTorques);
   out.resize(linkCount());
 
   // The inward pass adds the wrenches to the bias terms as it visits the bodies.

@@ -379,7 +379,7 @@ class ArticulatedBody {
   /// writing @p out.
   template <bool general>
   void biasAndOutwardPasses(const Wrenches& wrenches, const real* torques, Output& out);
-  /// solve()'s passes, after the check of @p jointTorques.
+  /// solve()'s passes, @p jointTorques already checked (checkTorques()).
   void solveWith(std::span<const real> jointTorques, const Wrenches& wrenches, Output& out);
 
   real baseMass_;
