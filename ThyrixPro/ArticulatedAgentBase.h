@@ -310,7 +310,9 @@ class ArticulatedAgentBase : public MultiBodyObject {
   std::vector<real> servoTorques_;  ///< the servo torques of the last step (N m)
   std::vector<real> limitTorques_;  ///< the limit torques of the last step (N m)
   /// The wrenches of applyLinkForce() per body, base first (body b at b + 1), about each centre
-  /// of mass: `(torque, fx, fy)`.
+  /// of mass: `(torque, fx, fy)`. The links' lack the weight while applyWeight() keeps it
+  /// (linkWeightKept_): code that reads or writes a link's wrench here other than through
+  /// applyLinkForce() and its kin calls touchLinkWrenches() first.
   std::vector<Vector3> linkWrenches_;
   /// The joints that have limits, in index order.
   std::vector<int> limitedJoints_;
@@ -327,9 +329,10 @@ class ArticulatedAgentBase : public MultiBodyObject {
   /// (ArticulatedBody::solve() with a link wrench), the same bits.
   bool linkWeightKept_ = false;
   Vector3 linkWeight_;  ///< see linkWeightKept_
-  /// Before a link's wrench is given a force: adds the weight applyWeight() kept, if it did, to
-  /// every link's (the additions in the order applyWeight() would have made them), and notes
-  /// that the links' wrenches are no longer clear.
+  /// Before a link's wrench in linkWrenches_ is given a force or read (other than by the solve
+  /// that takes the kept weight): adds the weight applyWeight() kept, if it did, to every
+  /// link's (the additions in the order applyWeight() would have made them), and notes that
+  /// the links' wrenches are no longer clear.
   void touchLinkWrenches() {
     if (linkWeightKept_) [[unlikely]]
       addKeptLinkWeight();
