@@ -41,8 +41,8 @@ inline bool marked(const std::uint64_t* never, std::size_t i, std::size_t j) {
 
 }  // namespace
 
-// The sweep out of line: its loop gets the registers to itself (inlined, it kept the marks'
-// address and a box index on the stack).
+// The sweep and its scans out of line: each loop gets the registers to itself (inlined, the
+// sweep kept the marks' address and a box index on the stack).
 #if defined(__GNUC__)
 #define THYRIX_SWEEP_NO_INLINE [[gnu::noinline]]
 #else
@@ -126,12 +126,9 @@ namespace {
 /// scanned (the tests). Out of line: the sweep's loop keeps its registers for a chain's
 /// links, which need no call.
 template <int axis, bool filtered>
-#if defined(__GNUC__)
-[[gnu::noinline]]
-#endif
-std::size_t
-scan(const BoundingBox* base, std::size_t i, const std::size_t* at, const std::size_t* end,
-     const std::uint64_t* never, std::vector<BoxPair>& pairs) {
+THYRIX_SWEEP_NO_INLINE std::size_t scan(const BoundingBox* base, std::size_t i,
+                                        const std::size_t* at, const std::size_t* end,
+                                        const std::uint64_t* never, std::vector<BoxPair>& pairs) {
   const BoundingBox& p = boxAt(base, i);
   const real upper = upperOf<axis>(p);
   const std::size_t* const from = at;
