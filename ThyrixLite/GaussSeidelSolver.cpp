@@ -493,10 +493,11 @@ void GaussSeidelSolver::conjugateStep(real beta) {
       conjugateRowsPackedAvx<real>(rows_.size(), beta, rows_.data(), turning_.data(),
                                    velocities_.data(), omegas_.data(), forces_.data(),
                                    direction_.data(), changes_.data());
-      return;
+    } else {
+      conjugateRowsAvx<turning>(rows_.size(), beta, rows_.data(), turning_.data(),
+                                velocities_.data(), omegas_.data(), forces_.data(),
+                                direction_.data(), changes_.data());
     }
-    conjugateRowsAvx<turning>(rows_.size(), beta, rows_.data(), turning_.data(), velocities_.data(),
-                              omegas_.data(), forces_.data(), direction_.data(), changes_.data());
     return;
   }
 #endif
