@@ -1,6 +1,7 @@
 /// @file BroadPhase.cpp
 /// @brief BroadPhase above smallCount boxes: the sweep or the grid (dense or hashed).
 #include <ThyrixLite/BroadPhase.h>
+#include <Tools/Inlining.h>
 #include <Tools/ProcessorFeatures.h>
 
 #include <algorithm>
@@ -12,12 +13,6 @@
 #endif
 #if defined(THYRIX_AVX_DISPATCH)
 #include <immintrin.h>
-#endif
-
-#if defined(__GNUC__)
-#define THYRIX_ALWAYS_INLINE [[gnu::always_inline]] inline
-#else
-#define THYRIX_ALWAYS_INLINE inline
 #endif
 
 namespace thyrix {
@@ -630,5 +625,3 @@ void BroadPhase::findPairsInHashedGrid(std::span<const BoundingBox> boxes,
 }
 
 }  // namespace thyrix
-
-#undef THYRIX_ALWAYS_INLINE

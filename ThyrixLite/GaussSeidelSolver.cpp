@@ -1,4 +1,5 @@
 #include <ThyrixLite/GaussSeidelSolver.h>
+#include <Tools/Inlining.h>
 #include <Tools/ProcessorFeatures.h>
 
 #include <algorithm>
@@ -333,12 +334,6 @@ inline void push(Vector2* velocity, real* omega, const Row& row, const Turning* 
   }
 }
 
-#if defined(__GNUC__)
-#define THYRIX_ALWAYS_INLINE [[gnu::always_inline]] inline
-#else
-#define THYRIX_ALWAYS_INLINE inline
-#endif
-
 /// One sweep over the @p n rows @p rows (see GaussSeidelSolver::sweep()), their turning parts
 /// @p turns, the island's velocities @p velocity and @p omega, the forces @p forces; records
 /// the changes in @p changes. @return the sum of the squared changes.
@@ -548,4 +543,3 @@ int GaussSeidelSolver::solveMatrix(std::span<const real> matrix, std::span<const
 
 #undef THYRIX_UNROLL_TWO
 #undef THYRIX_UNROLL_FOUR
-#undef THYRIX_ALWAYS_INLINE

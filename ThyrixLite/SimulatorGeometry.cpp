@@ -2,6 +2,7 @@
 /// @brief Phase 2 of a step, first part: the shapes' geometry and grid boxes (what moved).
 #include <ThyrixLite/Border.h>
 #include <ThyrixLite/Simulator.h>
+#include <Tools/Inlining.h>
 #include <Tools/ProcessorFeatures.h>
 
 #include <algorithm>
@@ -150,24 +151,15 @@ inline void Simulator::addGeometryBox(const ShapeGeometry& g, Vector2& boxMin, V
   includeCapsuleBox<real>(g.p0, g.p1, g.radius, boxMin, boxMax);
 }
 
-// Forced inlining where GCC kept a call (measured), and an out-of-line loop (below).
-#if defined(__GNUC__)
-#define THYRIX_FORCE_INLINE [[gnu::always_inline]] inline
-#define THYRIX_NO_INLINE [[gnu::noinline]]
-#define THYRIX_LAMBDA_FORCE_INLINE __attribute__((always_inline))
-#else
-#define THYRIX_FORCE_INLINE inline
-#define THYRIX_NO_INLINE
-#define THYRIX_LAMBDA_FORCE_INLINE
-#endif
+// THYRIX_ALWAYS_INLINE below where GCC kept a call (measured), THYRIX_NO_INLINE on a loop.
 
 // Recomputes capsule @p s's geometry and grid box, and widens the body box (@p boxMin,
 // @p boxMax) by its box (the one computation of a capsule, for standalone capsules and the
 // parts of composed bodies alike).
-THYRIX_FORCE_INLINE void Simulator::updateCapsule(std::uint32_t s, Primitive& primitive,
-                                                  ShapePose& pose, ShapeGeometry& g, bool poseKnown,
-                                                  const GridTargets& grid, Vector2& boxMin,
-                                                  Vector2& boxMax) {
+THYRIX_ALWAYS_INLINE void Simulator::updateCapsule(std::uint32_t s, Primitive& primitive,
+                                                   ShapePose& pose, ShapeGeometry& g,
+                                                   bool poseKnown, const GridTargets& grid,
+                                                   Vector2& boxMin, Vector2& boxMax) {
   const Vector2 r = primitive.r;
   const real alpha = primitive.alpha;
   // The half axis turns with the angle only: a capsule that slides keeps it. Kept in a
@@ -182,10 +174,10 @@ THYRIX_FORCE_INLINE void Simulator::updateCapsule(std::uint32_t s, Primitive& pr
   placeCapsule(s, r, alpha, axis, pose, g, poseKnown, grid, boxMin, boxMax);
 }
 
-THYRIX_FORCE_INLINE void Simulator::placeCapsule(std::uint32_t s, Vector2 r, real alpha,
-                                                 Vector2 axis, ShapePose& pose, ShapeGeometry& g,
-                                                 bool poseKnown, const GridTargets& grid,
-                                                 Vector2& boxMin, Vector2& boxMax) {
+THYRIX_ALWAYS_INLINE void Simulator::placeCapsule(std::uint32_t s, Vector2 r, real alpha,
+                                                  Vector2 axis, ShapePose& pose, ShapeGeometry& g,
+                                                  bool poseKnown, const GridTargets& grid,
+                                                  Vector2& boxMin, Vector2& boxMax) {
   const std::uint32_t slot = grid.slots[s];
   grid.movedBits[slot / 64] |= std::uint64_t{1} << (slot % 64);
   pose.r = r;
@@ -198,8 +190,8 @@ THYRIX_FORCE_INLINE void Simulator::placeCapsule(std::uint32_t s, Vector2 r, rea
 // addCachedBox reads its box as a capsule's (min and max of equal values, which are that
 // value, as are the capsule formulas with both ends at the centre). The travel is returned
 // as computed (the caller that needs it would otherwise read it back from memory).
-THYRIX_FORCE_INLINE real Simulator::updateCircle(std::uint32_t s, Vector2 r, bool poseKnown,
-                                                 Vector2& boxMin, Vector2& boxMax) {
+THYRIX_ALWAYS_INLINE real Simulator::updateCircle(std::uint32_t s, Vector2 r, bool poseKnown,
+                                                  Vector2& boxMin, Vector2& boxMax) {
   ShapeGeometry& g = geometry_[s];
   const Vector2 last = g.p0;
   g.p0 = r;
@@ -230,8 +222,8 @@ THYRIX_FORCE_INLINE real Simulator::updateCircle(std::uint32_t s, Vector2 r, boo
 // since the last change of the fraction), and the half length is in shapePoses_.
 // With @p standalone (the shape is its body) a circle's pose is not noted: only a composed
 // body's shapes (compared one by one) and capsules (their axis) read it.
-THYRIX_FORCE_INLINE void Simulator::updateShape(std::uint32_t s, bool poseKnown, bool standalone,
-                                                Vector2& boxMin, Vector2& boxMax) {
+THYRIX_ALWAYS_INLINE void Simulator::updateShape(std::uint32_t s, bool poseKnown, bool standalone,
+                                                 Vector2& boxMin, Vector2& boxMax) {
   Primitive& primitive = *shapes_[s].primitive;
   ShapePose& pose = shapePoses_[s];
   ShapeGeometry& g = geometry_[s];
@@ -260,7 +252,8 @@ THYRIX_FORCE_INLINE void Simulator::updateShape(std::uint32_t s, bool poseKnown,
 // Inline (forced: GCC kept a call, which cost a pile of moving bodies 1% more instructions):
 // called from updateGeometry, the only caller, for the bodies that changed or that have
 // several shapes.
-THYRIX_FORCE_INLINE void Simulator::updateBody(std::uint32_t index, bool changed, bool newFilters) {
+THYRIX_ALWAYS_INLINE void Simulator::updateBody(std::uint32_t index, bool changed,
+                                                bool newFilters) {
   BodyState& state = bodyStates_[index];
   PhysicalObject& body = *state.object;
   std::uint8_t* const shapeMoved = shapeMoved_.data();
@@ -311,7 +304,7 @@ THYRIX_FORCE_INLINE void Simulator::updateBody(std::uint32_t index, bool changed
 // Inline (forced: out of line, it saved 9 instructions a body of a falling pile, not 40):
 // called from updateGeometry's first loop, the only caller, for a crowd's bodies in motion,
 // whose objects are then at hand (the second loop read each body again).
-THYRIX_FORCE_INLINE void Simulator::updateMovedCircle(BodyState& state, bool changed) {
+THYRIX_ALWAYS_INLINE void Simulator::updateMovedCircle(BodyState& state, bool changed) {
   // updateBody's path for a standalone circle, known (its filters are unchanged: `fixed` is
   // known) and travelling if unchanged (restsCheaply is false): the same operations.
   PhysicalObject& body = *state.object;
@@ -363,7 +356,7 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
   // comes in as parameters, not captures: the AVX copy below is a call of its own, which read
   // captures from memory again after each of the loop's byte stores.
   const auto run = [this](auto knownConstant, const BodyState& body,
-                          bool bodyChanged) THYRIX_LAMBDA_FORCE_INLINE {
+                          bool bodyChanged) THYRIX_LAMBDA_ALWAYS_INLINE {
     constexpr bool poseKnown = decltype(knownConstant)::value;
     const Shape* const shapes = shapes_.data();
     ShapePose* const poses = shapePoses_.data();
@@ -459,10 +452,6 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
   else
     run(std::false_type{}, state, changed);
 }
-
-#undef THYRIX_FORCE_INLINE
-#undef THYRIX_NO_INLINE
-#undef THYRIX_LAMBDA_FORCE_INLINE
 
 void Simulator::updateGeometry() {
   // A new margin changes every shape's geometry; without rest skipping nothing is kept.

@@ -1,4 +1,5 @@
 #include <ThyrixLite/SweepAndPrune.h>
+#include <Tools/Inlining.h>
 
 #include <algorithm>
 #include <cmath>
@@ -41,13 +42,8 @@ inline bool marked(const std::uint64_t* never, std::size_t i, std::size_t j) {
 
 }  // namespace
 
-// The sweep and its scans out of line: each loop gets the registers to itself (inlined, the
-// sweep kept the marks' address and a box index on the stack).
-#if defined(__GNUC__)
-#define THYRIX_SWEEP_NO_INLINE [[gnu::noinline]]
-#else
-#define THYRIX_SWEEP_NO_INLINE
-#endif
+// The sweep and its scans out of line (THYRIX_NO_INLINE below): each loop gets the registers to
+// itself (inlined, the sweep kept the marks' address and a box index on the stack).
 
 void SweepAndPrune::reserve(std::uint32_t count) { order_.reserve(count); }
 
@@ -126,9 +122,9 @@ namespace {
 /// scanned (the tests). Out of line: the sweep's loop keeps its registers for a chain's
 /// links, which need no call.
 template <int axis, bool filtered>
-THYRIX_SWEEP_NO_INLINE std::size_t scan(const BoundingBox* base, std::size_t i,
-                                        const std::size_t* at, const std::size_t* end,
-                                        const std::uint64_t* never, std::vector<BoxPair>& pairs) {
+THYRIX_NO_INLINE std::size_t scan(const BoundingBox* base, std::size_t i, const std::size_t* at,
+                                  const std::size_t* end, const std::uint64_t* never,
+                                  std::vector<BoxPair>& pairs) {
   const BoundingBox& p = boxAt(base, i);
   const real upper = upperOf<axis>(p);
   const std::size_t* const from = at;
@@ -150,9 +146,10 @@ THYRIX_SWEEP_NO_INLINE std::size_t scan(const BoundingBox* base, std::size_t i,
 }  // namespace
 
 template <int axis, bool filtered>
-THYRIX_SWEEP_NO_INLINE SweepAndPrune::Outcome SweepAndPrune::sweep(
-    std::span<const BoundingBox> boxes, std::size_t maxTests, const std::uint64_t* never,
-    std::vector<BoxPair>& pairs) const {
+THYRIX_NO_INLINE SweepAndPrune::Outcome SweepAndPrune::sweep(std::span<const BoundingBox> boxes,
+                                                             std::size_t maxTests,
+                                                             const std::uint64_t* never,
+                                                             std::vector<BoxPair>& pairs) const {
   const std::size_t* const order = order_.data();
   const std::size_t* const end = order + order_.size();
   const BoundingBox* const base = boxes.data();
@@ -232,7 +229,5 @@ bool SweepAndPrune::sort(std::span<const BoundingBox> boxes) {
   }
   return moved;
 }
-
-#undef THYRIX_SWEEP_NO_INLINE
 
 }  // namespace thyrix
