@@ -5,6 +5,7 @@
 // weighed by hand.
 
 #include "TestTolerances.h"
+#include "support/SameAgentMotion.h"
 #include "support/SolverCases.h"
 
 #include <ThyrixLite/Border.h>
@@ -169,15 +170,7 @@ TEST_P(KeptLinkWeightAgent, HasTheBitsOfTheWeightsAddedByHand) {
     }
     for (Simulator& world : worlds) world.advanceTime();
   }
-  const Agent& one = *agents[0];
-  for (int b = Agent::base; b < byHand.linkCount(); ++b) {
-    EXPECT_EQ(bitsOf(one.centerOfMass(b).x), bitsOf(byHand.centerOfMass(b).x)) << b;
-    EXPECT_EQ(bitsOf(one.centerOfMass(b).y), bitsOf(byHand.centerOfMass(b).y)) << b;
-    EXPECT_EQ(bitsOf(one.bodyAngle(b)), bitsOf(byHand.bodyAngle(b))) << b;
-    EXPECT_EQ(bitsOf(one.bodyVelocity(b).x), bitsOf(byHand.bodyVelocity(b).x)) << b;
-    EXPECT_EQ(bitsOf(one.bodyVelocity(b).y), bitsOf(byHand.bodyVelocity(b).y)) << b;
-    EXPECT_EQ(bitsOf(one.bodyAngularVelocity(b)), bitsOf(byHand.bodyAngularVelocity(b))) << b;
-  }
+  test::expectSameAgentMotion(*agents[0], byHand);
 }
 
 TEST(KeptLinkWeight, WeighedTwiceInAStepIsWeighedTwice) {
@@ -202,11 +195,7 @@ TEST(KeptLinkWeight, WeighedTwiceInAStepIsWeighedTwice) {
         agents[1]->applyLinkForceAtCenterOfMass(i, agents[1]->articulatedBody().mass(i) * g);
     for (Simulator& world : worlds) world.advanceTime();
   }
-  for (int i = 0; i < agents[1]->linkCount(); ++i) {
-    EXPECT_EQ(bitsOf(agents[0]->bodyAngle(i)), bitsOf(agents[1]->bodyAngle(i))) << i;
-    EXPECT_EQ(bitsOf(agents[0]->bodyAngularVelocity(i)), bitsOf(agents[1]->bodyAngularVelocity(i)))
-        << i;
-  }
+  test::expectSameAgentMotion(*agents[0], *agents[1]);
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, KeptLinkWeightAgent,
