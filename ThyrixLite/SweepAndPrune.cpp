@@ -42,9 +42,6 @@ inline bool marked(const std::uint64_t* never, std::size_t i, std::size_t j) {
 
 }  // namespace
 
-// The sweep and its scans out of line (THYRIX_NO_INLINE below): each loop gets the registers to
-// itself (inlined, the sweep kept the marks' address and a box index on the stack).
-
 void SweepAndPrune::reserve(std::uint32_t count) { order_.reserve(count); }
 
 bool SweepAndPrune::findPairs(std::span<const BoundingBox> boxes, real testsPerBox,
@@ -145,6 +142,8 @@ THYRIX_NO_INLINE std::size_t scan(const BoundingBox* base, std::size_t i, const 
 
 }  // namespace
 
+// Out of line, as its scans: each loop gets the registers to itself (inlined, the sweep kept
+// the marks' address and a box index on the stack).
 template <int axis, bool filtered>
 THYRIX_NO_INLINE SweepAndPrune::Outcome SweepAndPrune::sweep(std::span<const BoundingBox> boxes,
                                                              std::size_t maxTests,
