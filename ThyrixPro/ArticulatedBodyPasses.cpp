@@ -340,10 +340,15 @@ void ArticulatedBody::biasAndOutwardPasses(const Wrenches& wrenches, const real*
   const auto outwardStep = [&](std::size_t i, const Vector3& vp) {
     const std::size_t self = i + 1;
     const JointTerms& t = terms_[i];
-    const real qdot =
-        jointBias_[i] * t.inverseD - t.gamma * angularPart(vp) - t.beta.dot(linearPart(vp));
+    const real omega = angularPart(vp);
+    const real rate = jointBias_[i] * t.inverseD;
+    const real betaV = t.beta.dot(linearPart(vp));
+    const real qdot = rate - t.gamma * omega - betaV;
     Vector3 v = translateMotion(vp, shift_[i]);
-    v.x += qdot;
+    // The link's angular velocity omega' + qdot_i, written as alpha_i omega' + u_i / D_i -
+    // beta_i . v' (1 - gamma = alpha): the next link then waits three operations on omega'
+    // (not four) and one after beta . v' (not two).
+    v.x = t.alpha * omega + rate - betaV;
     out.jointRates[i] = qdot;
     // The centre of mass moves with the body point there: v_O + omega x c.
     out.velocities[self] = translateMotion(v, comOffset_[self]);
