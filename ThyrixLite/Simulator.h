@@ -254,6 +254,10 @@ class Simulator : public World {
   void placeCapsule(std::uint32_t shape, Vector2 r, real alpha, Vector2 axis, ShapePose& pose,
                     ShapeGeometry& geometry, bool poseKnown, const GridTargets& grid,
                     Vector2& boxMin, Vector2& boxMax);
+  /// placeCapsule without the grid's moved bit (the caller's), its grid box @p gridBox.
+  void placeLinkCapsule(Vector2 r, real alpha, Vector2 axis, ShapePose& pose,
+                        ShapeGeometry& geometry, bool poseKnown, real travelFactor,
+                        BoundingBox& gridBox, Vector2& boxMin, Vector2& boxMax);
   /// updateComposedBody's loop body for shape @p shape, once a shape of its body moved, in
   /// general (the loop does a chain's links and the unmoved shapes itself).
   void updateComposedShape(std::uint32_t shape, bool changed, bool poseKnown, Vector2& boxMin,

@@ -27,6 +27,15 @@ std::uint64_t bitsOf(real a) {
 bool sameBits(real a, real b) { return bitsOf(a) == bitsOf(b); }
 bool sameBits(Vector2 a, Vector2 b) { return sameBits(a.x, b.x) && sameBits(a.y, b.y); }
 
+/// Sets bits @p begin to @p end - 1 of the bit set @p words (bit `i % 64` of word `i / 64`).
+void setBits(std::uint64_t* words, std::uint32_t begin, std::uint32_t end) {
+  for (std::uint32_t w = begin / 64; w <= (end - 1) / 64; ++w) {
+    const std::uint32_t from = std::max(begin, 64 * w) - 64 * w;   // in this word
+    const std::uint32_t to = std::min(end, 64 * w + 64) - 64 * w;  // (1 to 64)
+    words[w] |= (~std::uint64_t{0} >> (64 - (to - from))) << from;
+  }
+}
+
 /// Widens the box (@p boxMin, @p boxMax) to take in the box (@p lower, @p upper), coordinate
 /// by coordinate (a body's box is this union of its shapes' boxes, in shape order).
 void include(Vector2& boxMin, Vector2& boxMax, Vector2 lower, Vector2 upper) {
@@ -180,10 +189,19 @@ THYRIX_ALWAYS_INLINE void Simulator::placeCapsule(std::uint32_t s, Vector2 r, re
                                                   Vector2& boxMin, Vector2& boxMax) {
   const std::uint32_t slot = grid.slots[s];
   grid.movedBits[slot / 64] |= std::uint64_t{1} << (slot % 64);
+  placeLinkCapsule(r, alpha, axis, pose, g, poseKnown, grid.travelFactor, grid.boxes[slot], boxMin,
+                   boxMax);
+}
+
+THYRIX_ALWAYS_INLINE void Simulator::placeLinkCapsule(Vector2 r, real alpha, Vector2 axis,
+                                                      ShapePose& pose, ShapeGeometry& g,
+                                                      bool poseKnown, real travelFactor,
+                                                      BoundingBox& gridBox, Vector2& boxMin,
+                                                      Vector2& boxMax) {
   pose.r = r;
   pose.alpha = alpha;
-  capsuleGeometry<real>(r, axis, g.p0, g.p1, g.radius, g.margin, g.travel, grid.travelFactor,
-                        poseKnown, grid.boxes[slot], boxMin, boxMax);
+  capsuleGeometry<real>(r, axis, g.p0, g.p1, g.radius, g.margin, g.travel, travelFactor, poseKnown,
+                        gridBox, boxMin, boxMax);
 }
 
 // A circle: its geometry does not depend on its angle. Its axis is its centre twice, so that
@@ -388,7 +406,8 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
     // A chain's link: a capsule without sensors, placed by its owner, that moved, its half
     // axis at hand (the pose's, or the direction cached by the primitive: no sine or cosine).
     // Done here as updateComposedShape does it; false, nothing written, for every other shape.
-    const auto updateLink = [&](std::uint32_t s) {
+    // Its grid box is that of slot @p slot (its caller's run knows it: no look-up).
+    const auto updateLink = [&](std::uint32_t s, std::uint32_t slot) {
       const Primitive& primitive = *shapes[s].primitive;
       if (shapes[s].type != ShapeType::Capsule || primitive.sensing_ || primitive.rigid_)
         return false;
@@ -405,8 +424,8 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
         axis = primitive.direction_ * pose.halfLength;
         pose.axis = axis;
       }
-      placeCapsule(s, r, alpha, axis, pose, g, poseKnown, grid, boxMin, boxMax);
-      shapeMoved[s] = 1;  // (last: a byte store, which the compiler cannot tell from the rest)
+      placeLinkCapsule(r, alpha, axis, pose, g, poseKnown, grid.travelFactor, grid.boxes[slot],
+                       boxMin, boxMax);
       return true;
     };
     // A circle or capsule without sensors that did not move: its box as cached.
@@ -421,7 +440,18 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
       return true;
     };
     for (std::uint32_t s = firstMoved; s < end; ++s) {
-      if (updateLink(s) || addUnmoved(s)) [[likely]]
+      // A run of links: consecutive shapes in the grid, so in consecutive slots (shapes are
+      // only ever appended, and the grid's slots with them). Their moved marks are set once
+      // the run ends: a chain's 1000 links take a fill and 16 words, not a byte and a bit each.
+      const std::uint32_t runStart = s;
+      const std::uint32_t runSlot = grid.slots[s];  // (~0u, unused, for a half-plane)
+      while (s < end && updateLink(s, runSlot + (s - runStart))) ++s;
+      if (s != runStart) {
+        std::fill(shapeMoved + runStart, shapeMoved + s, std::uint8_t{1});
+        setBits(grid.movedBits, runSlot, runSlot + (s - runStart));
+      }
+      if (s == end) break;
+      if (addUnmoved(s)) [[likely]]
         continue;
       Vector2 lower = boxMin;  // (the box stays a local: it leaves registers only here)
       Vector2 upper = boxMax;
