@@ -198,11 +198,11 @@ void gatherExtentsFast(std::span<const BoundingBox> boxes, SweepAndPrune::Extent
 }  // namespace
 
 void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs) {
-  findPairs(boxes, {}, pairs);
+  findPairs(boxes, {}, pairs, nullptr);
 }
 
 void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const std::uint64_t> moved,
-                           std::vector<BoxPair>& pairs) {
+                           std::vector<BoxPair>& pairs, const SweepAndPrune::Extents* extents) {
   pairs.clear();
   const auto count = static_cast<std::uint32_t>(boxes.size());
   // Few boxes: testing every pair is cheaper than building the grid (measured: a 22-body
@@ -212,10 +212,11 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const s
     findPairsAmongFew(boxes, remembered ? moved[0] : 0, remembered, pairs);
     return;
   }
-  findPairsAmongMany(boxes, pairs);
+  findPairsAmongMany(boxes, extents, pairs);
 }
 
 void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes,
+                                    const SweepAndPrune::Extents* gathered,
                                     std::vector<BoxPair>& pairs) {
   rememberedCount_ = 0;
   reserveFor(static_cast<std::uint32_t>(boxes.size()));
@@ -233,6 +234,8 @@ void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes,
   const bool gridExpected = lastTookGrid_ || !allowSweep;
   if (gridExpected)
     gatherExtentsFast<real, true>(boxes, extents, extentSum, maxExtent);
+  else if (gathered != nullptr)  // (the caller's: the same sums)
+    extents = *gathered;
   else
     gatherExtentsFast<real, false>(boxes, extents, extentSum, maxExtent);
   lastTookGrid_ = false;

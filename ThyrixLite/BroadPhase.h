@@ -52,8 +52,10 @@ class BroadPhase {
   /// be the same as in the last call (same index, same corners), so its overlaps with other
   /// such boxes are not tested again. The promise is only used when the last call had as many
   /// boxes, and up to smallCount boxes; otherwise every pair is tested.
+  /// With @p extents not null, the boxes' SweepAndPrune::Extents, gathered by the caller
+  /// over every box in index order (as it computed them): one pass over the boxes less.
   void findPairs(std::span<const BoundingBox> boxes, std::span<const std::uint64_t> moved,
-                 std::vector<BoxPair>& pairs);
+                 std::vector<BoxPair>& pairs, const SweepAndPrune::Extents* extents = nullptr);
 
   /// Pairs the caller drops anyway, which the sweep then leaves out of its output
   /// (SweepAndPrune::setNeverPaired(), same bits, same conditions); the few-box test and the
@@ -83,7 +85,8 @@ class BroadPhase {
   [[gnu::noinline]]
 #endif
   void
-  findPairsAmongMany(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
+  findPairsAmongMany(std::span<const BoundingBox> boxes, const SweepAndPrune::Extents* extents,
+                     std::vector<BoxPair>& pairs);
   void findPairsInGrid(std::span<const BoundingBox> boxes, real extentSum, real maxExtent,
                        std::vector<BoxPair>& pairs);
   void findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::int64_t lowX,

@@ -387,7 +387,14 @@ class Simulator : public World {
   std::vector<std::uint64_t> gridMovedBits_;  // a bit per grid shape: moved this detection
   std::vector<std::uint64_t> borderReach_;    // per border, a bit per grid shape behind it
   std::vector<std::uint32_t> pendingBodies_;  // updateGeometry: bodies for its second loop
-  std::size_t reachShapes_ = 0;               // grid shapes borderReach_ was computed for
+  // The sweep's extents of grid slots 0 to gridExtentsCount_ - 1, gathered in slot order by
+  // updateGeometry as it computed their boxes (runs of links): the broad phase's when they
+  // cover every grid shape.
+  SweepAndPrune::Extents gridExtents_;
+  std::uint32_t gridExtentsCount_ = 0;
+  /// Adds the grid boxes from slot gridExtentsCount_ to @p slot - 1 to gridExtents_.
+  void gatherExtentsUpTo(std::uint32_t slot);
+  std::size_t reachShapes_ = 0;  // grid shapes borderReach_ was computed for
   // Pairs of one body's shapes that never touch, which the broad phase's sweep leaves out
   // (updateNeverPaired(), SimulatorContacts.cpp).
   struct NeverPaired {

@@ -105,7 +105,8 @@ void Simulator::detectContacts() {
   if (neverPaired_.objects != bodyStates_.size() || !neverPaired_.rules.empty())
     updateNeverPaired();
   broadPhase_.setNeverPaired(neverPaired_.bits);
-  broadPhase_.findPairs(gridBoxes_, gridMovedBits_, pairs_);
+  broadPhase_.findPairs(gridBoxes_, gridMovedBits_, pairs_,
+                        gridExtentsCount_ == gridShapes_.size() ? &gridExtents_ : nullptr);
   // The pairs of two circles in reach (most of a crowd's) are batched: their square roots and
   // divisions, in a short loop of their own, overlap from pair to pair (measured: one pair
   // at a time, each waited for the last). A batch is emptied before any other pair adds

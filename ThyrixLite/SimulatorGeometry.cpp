@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <type_traits>
 
 #if defined(__SSE2__)
@@ -79,6 +80,32 @@ inline void includeCapsuleBox(const Vector2& p0, const Vector2& p1, Real radius,
   const Vector2 round{radius, radius};
   include(boxMin, boxMax, Vector2{std::min(p0.x, p1.x), std::min(p0.y, p1.y)} - round,
           Vector2{std::max(p0.x, p1.x), std::max(p0.y, p1.y)} + round);
+}
+
+/// Adds @p box to @p extents, the next grid box in slot order, as BroadPhase gathers them
+/// (Extents::add; in double, with SSE2, its x and y in one instruction, as gatherExtents does
+/// it): the same operations in the same order, so the same sums.
+template <class Real>
+inline void addExtents(const BoundingBox& box, SweepAndPrune::Extents& extents) {
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<Real, double>) {
+    using Extents = SweepAndPrune::Extents;
+    static_assert(offsetof(Extents, sumY) == offsetof(Extents, sumX) + sizeof(Real) &&
+                      offsetof(Extents, lowY) == offsetof(Extents, lowX) + sizeof(Real) &&
+                      offsetof(Extents, highY) == offsetof(Extents, highX) + sizeof(Real),
+                  "the extents are read as pairs (x, y)");
+    Real* const sums = &extents.sumX;
+    Real* const low = &extents.lowX;
+    Real* const high = &extents.highX;
+    const __m128d lower = loadPair<Real>(box.lower);
+    const __m128d upper = loadPair<Real>(box.upper);
+    _mm_storeu_pd(sums, _mm_add_pd(_mm_loadu_pd(sums), _mm_sub_pd(upper, lower)));
+    _mm_storeu_pd(low, _mm_min_pd(lower, _mm_loadu_pd(low)));
+    _mm_storeu_pd(high, _mm_max_pd(upper, _mm_loadu_pd(high)));
+    return;
+  }
+#endif
+  extents.add(box);
 }
 
 /// A capsule's geometry from its centre @p r and half axis @p axis, exactly as
@@ -407,7 +434,9 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
     // axis at hand (the pose's, or the direction cached by the primitive: no sine or cosine).
     // Done here as updateComposedShape does it; false, nothing written, for every other shape.
     // Its grid box is that of slot @p slot (its caller's run knows it: no look-up).
-    const auto updateLink = [&](std::uint32_t s, std::uint32_t slot) {
+    // Its grid box is added to @p extents (see the run below).
+    const auto updateLink = [&](std::uint32_t s, std::uint32_t slot,
+                                SweepAndPrune::Extents& extents) {
       const Primitive& primitive = *shapes[s].primitive;
       if (shapes[s].type != ShapeType::Capsule || primitive.sensing_ || primitive.rigid_)
         return false;
@@ -426,6 +455,7 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
       }
       placeLinkCapsule(r, alpha, axis, pose, g, poseKnown, grid.travelFactor, grid.boxes[slot],
                        boxMin, boxMax);
+      addExtents<real>(grid.boxes[slot], extents);
       return true;
     };
     // A circle or capsule without sensors that did not move: its box as cached.
@@ -445,10 +475,17 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
       // the run ends: a chain's 1000 links take a fill and 16 words, not a byte and a bit each.
       const std::uint32_t runStart = s;
       const std::uint32_t runSlot = grid.slots[s];  // (~0u, unused, for a half-plane)
-      while (s < end && updateLink(s, runSlot + (s - runStart))) ++s;
+      // The run's grid boxes are also added to the sweep's extents (gridExtents_), which the
+      // broad phase then need not gather (a pass over the boxes, waiting on each sum): the
+      // boxes of the slots before it first (they are final, see gatherExtentsUpTo).
+      if (runSlot != ~0u && shapes[s].type == ShapeType::Capsule) gatherExtentsUpTo(runSlot);
+      SweepAndPrune::Extents extents = gridExtents_;
+      while (s < end && updateLink(s, runSlot + (s - runStart), extents)) ++s;
       if (s != runStart) {
         std::fill(shapeMoved + runStart, shapeMoved + s, std::uint8_t{1});
         setBits(grid.movedBits, runSlot, runSlot + (s - runStart));
+        gridExtents_ = extents;
+        gridExtentsCount_ = runSlot + (s - runStart);
       }
       if (s == end) break;
       if (addUnmoved(s)) [[likely]]
@@ -483,6 +520,14 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
     run(std::false_type{}, state, changed);
 }
 
+THYRIX_NO_INLINE void Simulator::gatherExtentsUpTo(std::uint32_t slot) {
+  // The boxes of slots before a shape of a pending body are final when updateComposedBody
+  // reaches it: they are its body's earlier shapes, or shapes of bodies of lower index, done
+  // before it or not moved (or circles, done in updateGeometry's first loop).
+  for (; gridExtentsCount_ < slot; ++gridExtentsCount_)
+    addExtents<real>(gridBoxes_[gridExtentsCount_], gridExtents_);
+}
+
 void Simulator::updateGeometry() {
   // A new margin changes every shape's geometry; without rest skipping nothing is kept.
   const bool newFraction = !sameBits(settings_.speculativeFraction, geometryFraction_);
@@ -493,6 +538,8 @@ void Simulator::updateGeometry() {
   if (newFraction)  // the margins are kept, and depend on nothing else (radii are fixed)
     for (ShapeGeometry& g : geometry_) g.margin = geometryFraction_ * g.radius;
   sensingPrimitives_.clear();
+  gridExtents_ = {};
+  gridExtentsCount_ = 0;
   gridMovedBits_.assign((gridShapes_.size() + 63) / 64, 0);
   // Every shape unmoved to begin with: a body at rest then writes nothing.
   std::fill(shapeMoved_.begin(), shapeMoved_.end(), std::uint8_t{0});
@@ -539,6 +586,9 @@ void Simulator::updateGeometry() {
   // registers (measured: one loop spilled and took 45 instructions a body at rest, not 29).
   for (std::uint32_t k = 0; k < pendingCount; ++k)
     updateBody(pending[k] / 4, (pending[k] & 1) != 0, (pending[k] & 2) != 0);
+  // Runs of links gathered the extents of their boxes and of those before: the rest too, so
+  // that the broad phase gathers none.
+  if (gridExtentsCount_ != 0) gatherExtentsUpTo(static_cast<std::uint32_t>(gridShapes_.size()));
 }
 
 }  // namespace thyrix
