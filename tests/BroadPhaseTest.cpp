@@ -500,5 +500,25 @@ TEST(BroadPhase, AlternatingSweepAndGridGiveWhatAFreshInstanceGives) {
   }
 }
 
+TEST(BroadPhase, ExtentsGatheredByTheCallerGiveTheSamePairs) {
+  // The simulator gathers the sweep's extents while it computes a chain's boxes and hands them
+  // over: the pairs must be those the broad phase finds gathering them itself, whether the
+  // sweep (a line of links) or the grid (a pile) takes the boxes.
+  const std::vector<BoundingBox> line = chainBoxes(3, 400, 0.1, 0.125, 0.3);
+  const std::vector<BoundingBox> pile = randomBoxes(5, 600, 2, 20);
+  BroadPhase given;
+  std::vector<BoxPair> pairs;
+  std::vector<BoxPair> expected;
+  for (const auto* boxes : {&line, &pile, &line}) {
+    SweepAndPrune::Extents extents;
+    for (const BoundingBox& box : *boxes) extents.add(box);
+    BroadPhase fresh;
+    fresh.findPairs(*boxes, expected);
+    given.findPairs(*boxes, {}, pairs, &extents);
+    EXPECT_TRUE(samePairs(pairs, expected));
+    expectSameAsBruteForce(*boxes, pairs);
+  }
+}
+
 }  // namespace
 }  // namespace thyrix
