@@ -89,6 +89,12 @@ ArticulatedBody::ArticulatedBody(real baseMass, real baseInertia,
   angle_.assign(n + 1, 0);
   axis_.assign(n + 1, Vector2{1, 0});
   comOffset_.assign(n + 1, Vector2{});
+  placements_.resize(n);
+  linkMasses_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    placements_[i] = {links_[i].jointPosition, links_[i].centerOfMass};
+    linkMasses_[i] = {links_[i].mass, links_[i].inertia};
+  }
   articulatedInertia_.assign(n + 1, SymmetricMatrix3{});
   bias_.assign(n + 1, Vector3{});
   originVelocity_.assign(n + 1, Vector3{});

@@ -323,7 +323,7 @@ class ArticulatedBody {
           parentAxis = axis_[p];
         }
       }
-      const ArticulatedLink& l = links_[i];
+      const LinkPlacement& l = placements_[i];
       const Vector2 shift = rotated(parentAxis, l.jointPosition);
       shift_[i] = shift;
       parentOrigin += shift;
@@ -386,6 +386,21 @@ class ArticulatedBody {
   real baseInertia_;
   bool baseFixed_ = false;
   std::vector<ArticulatedLink> links_;
+  // Copies of the fields of links_ that the kinematics and the passes read, packed: they read
+  // 32 and 16 bytes a link instead of lines of 88-byte links (the chain's arrays fill about
+  // the L2 cache).
+  /// Where a link sits in its frames: what linkOrigins() reads.
+  struct LinkPlacement {
+    Vector2 jointPosition;  ///< ArticulatedLink::jointPosition
+    Vector2 centerOfMass;   ///< ArticulatedLink::centerOfMass
+  };
+  /// A link's quasistatic mass and inertia: what the inward pass reads.
+  struct LinkMass {
+    real mass = 0;     ///< ArticulatedLink::mass
+    real inertia = 0;  ///< ArticulatedLink::inertia
+  };
+  std::vector<LinkPlacement> placements_;  ///< per link
+  std::vector<LinkMass> linkMasses_;       ///< per link
 
   Vector2 basePosition_;
   real baseAngle_ = 0;

@@ -118,7 +118,7 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
     };
     const __m128d negateLow = _mm_set_pd(0.0, -0.0);
     const __m128d zero = _mm_setzero_pd();
-    const ArticulatedLink* const links = links_.data();
+    const LinkMass* const links = linkMasses_.data();
     const Vector2* const centres = comOffset_.data() + 1;  // link i's at i
     const Vector2* const shifts = shift_.data();
     // Link i's wrench at i, or one for every link (stride 0: read again from one place).
@@ -217,7 +217,7 @@ void ArticulatedBody::inwardPass(const Wrenches& wrenches, const real* torques) 
   const auto chainStep = [&](std::size_t i, auto withWrenches) {
     const std::size_t self = i + 1;
     if constexpr (withInertias) {
-      const ArticulatedLink& link = links_[i];
+      const LinkMass& link = linkMasses_[i];
       const SymmetricMatrix3 da =
           spatialInertia(link.mass, link.inertia, comOffset_[self]) + inertiaCarried;
       inertiaCarried = articulateJoint<damped>(i, da);
@@ -246,7 +246,7 @@ void ArticulatedBody::inwardPass(const Wrenches& wrenches, const real* torques) 
       // chainStep(i, ...) with the test of carriedBias() (measured: in this loop, calls of
       // chainStep cost the plain chain's loop above 2 instructions a link).
       if constexpr (withInertias) {
-        const ArticulatedLink& link = links_[i];
+        const LinkMass& link = linkMasses_[i];
         const SymmetricMatrix3 da =
             spatialInertia(link.mass, link.inertia, comOffset_[self]) + inertiaCarried;
         inertiaCarried = articulateJoint<damped>(i, da);
@@ -258,7 +258,7 @@ void ArticulatedBody::inwardPass(const Wrenches& wrenches, const real* torques) 
     const bool carry = parent == i;
     const bool gathers = gathers_[self] != 0;
     if constexpr (withInertias) {
-      const ArticulatedLink& link = links_[i];
+      const LinkMass& link = linkMasses_[i];
       SymmetricMatrix3 da = spatialInertia(link.mass, link.inertia, comOffset_[self]);
       if (gathers) da = da + articulatedInertia_[self];
       da = da + inertiaCarried;
