@@ -121,63 +121,88 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
     const LinkMass* const links = linkMasses_.data();
     const Vector2* const centres = comOffset_.data() + 1;  // link i's at i
     const Vector2* const shifts = shift_.data();
-    // Link i's wrench at i, or one for every link (stride 0: read again from one place).
-    const Vector3* const linkWrenches = wrenches.uniform ? &wrenches.link : wrenches.perBody + 1;
-    const std::size_t wrenchStride = wrenches.uniform ? 0 : 1;
     JointTerms* const terms = terms_.data();
     Real* const jointBias = jointBias_.data();
-    // The carried inertia and bias.
-    Real xx = 0;
-    __m128d xyXz = zero;
-    __m128d yyZz = zero;
-    __m128d yz = zero;  // in the low lane
-    Real moment = 0;
-    __m128d force = zero;
-    for (std::size_t i = links_.size(); i-- > 0;) {
-      // da = spatialInertia(m, I, c) + carried
-      const Real m = links[i].mass;
-      const Vector2 c = centres[i];
-      const __m128d centre = pairOf(centres[i].x);
-      const __m128d mm = _mm_set1_pd(m);
-      const Real dxx = (links[i].inertia + m * (c.x * c.x + c.y * c.y)) + xx;
-      // (-m c.y, m c.x) + (xy, xz)
-      const __m128d b = _mm_add_pd(_mm_mul_pd(_mm_xor_pd(mm, negateLow), swapped(centre)), xyXz);
-      const __m128d dyyZz = _mm_add_pd(mm, yyZz);
-      const __m128d dyz = _mm_add_sd(zero, yz);
-      // articulateJoint<false>(i, da)
-      const __m128d r = pairOf(shifts[i].x);
-      const Real g = crossOf(r, b);
-      // A h = (yz r.x - yy r.y, zz r.x - yz r.y)
-      const __m128d ah =
-          _mm_sub_pd(_mm_mul_pd(_mm_move_sd(dyyZz, dyz), _mm_set1_pd(shifts[i].x)),
-                     _mm_mul_pd(_mm_unpacklo_pd(dyyZz, dyz), _mm_set1_pd(shifts[i].y)));
-      const Real hah = crossOf(r, ah);
-      const Real inverseD = 1 / dxx;
-      xx = hah - g * g * inverseD;
-      const __m128d beta = _mm_mul_pd(b, _mm_set1_pd(inverseD));
-      const Real alpha = -g * inverseD;
-      const Real gamma = (dxx + g) * inverseD;
-      JointTerms& t = terms[i];
-      t.inverseD = inverseD;
-      t.alpha = alpha;
-      t.gamma = gamma;
-      _mm_storeu_pd(reinterpret_cast<Real*>(&t.beta), beta);
-      xyXz = _mm_sub_pd(ah, _mm_mul_pd(beta, _mm_set1_pd(g)));
-      yyZz = _mm_sub_pd(dyyZz, _mm_mul_pd(beta, b));
-      yz = _mm_sub_sd(dyz, _mm_mul_sd(beta, _mm_unpackhi_pd(b, b)));
-      // passBias(i, carried - translateForceBack(w, c), tau)
-      const Vector3& w = linkWrenches[i * wrenchStride];
-      const __m128d wf = pairOf(w.y);
-      const Real pn = moment - (w.x + crossOf(centre, wf));
-      const __m128d pf = _mm_sub_pd(force, wf);
-      const Real tau = torques[i];
-      const Real u = tau - pn;
-      jointBias[i] = u;
-      moment = alpha * pn + crossOf(r, pf) + gamma * tau;
-      force = _mm_add_pd(pf, _mm_mul_pd(beta, _mm_set1_pd(u)));
-    }
-    inertiaCarried = {xx, low(xyXz), high(xyXz), low(yyZz), low(yz), high(yyZz)};
-    biasCarried = {moment, low(force), high(force)};
+    // In two copies: a wrench per link, or the same on every link (@p uniform true), whose
+    // force and its swapped pair are then read once, before the loop.
+    const auto sweep = [&](auto uniform) {
+      constexpr bool sameWrench = decltype(uniform)::value;
+      // Link i's at i (unless sameWrench: perBody is then null).
+      const Vector3* const perLink = sameWrench ? nullptr : wrenches.perBody + 1;
+      const Real uniformMoment = wrenches.link.x;
+      const __m128d uniformForce = pairOf(wrenches.link.y);
+      const __m128d uniformForceSwapped = swapped(uniformForce);
+      // The carried inertia and bias.
+      Real xx = 0;
+      __m128d xyXz = zero;
+      __m128d yyZz = zero;
+      // In the low lane. It starts at +0 and is never -0 (x - y is -0 only for x = -0), so
+      // yz is 0 + yz (SymmetricMatrix3's sum of the own inertia's yz = 0 and the carried one)
+      // bit for bit, without the addition.
+      __m128d yz = zero;
+      Real moment = 0;
+      __m128d force = zero;
+      for (std::size_t i = links_.size(); i-- > 0;) {
+        // da = spatialInertia(m, I, c) + carried
+        const Real m = links[i].mass;
+        const Vector2 c = centres[i];
+        const __m128d centre = pairOf(centres[i].x);
+        const __m128d mm = _mm_set1_pd(m);
+        const Real dxx = (links[i].inertia + m * (c.x * c.x + c.y * c.y)) + xx;
+        // (-m c.y, m c.x) + (xy, xz)
+        const __m128d b = _mm_add_pd(_mm_mul_pd(_mm_xor_pd(mm, negateLow), swapped(centre)), xyXz);
+        const __m128d dyyZz = _mm_add_pd(mm, yyZz);
+        // articulateJoint<false>(i, da)
+        const __m128d r = pairOf(shifts[i].x);
+        const Real g = crossOf(r, b);
+        // A h = (yz r.x - yy r.y, zz r.x - yz r.y)
+        const __m128d ah =
+            _mm_sub_pd(_mm_mul_pd(_mm_move_sd(dyyZz, yz), _mm_set1_pd(shifts[i].x)),
+                       _mm_mul_pd(_mm_unpacklo_pd(dyyZz, yz), _mm_set1_pd(shifts[i].y)));
+        const Real hah = crossOf(r, ah);
+        const Real inverseD = 1 / dxx;
+        xx = hah - g * g * inverseD;
+        const __m128d beta = _mm_mul_pd(b, _mm_set1_pd(inverseD));
+        const Real alpha = -g * inverseD;
+        const Real gamma = (dxx + g) * inverseD;
+        JointTerms& t = terms[i];
+        t.inverseD = inverseD;
+        t.alpha = alpha;
+        t.gamma = gamma;
+        _mm_storeu_pd(reinterpret_cast<Real*>(&t.beta), beta);
+        xyXz = _mm_sub_pd(ah, _mm_mul_pd(beta, _mm_set1_pd(g)));
+        yyZz = _mm_sub_pd(dyyZz, _mm_mul_pd(beta, b));
+        yz = _mm_sub_sd(yz, _mm_mul_sd(beta, _mm_unpackhi_pd(b, b)));
+        // passBias(i, carried - translateForceBack(w, c), tau); crossOf(centre, wf) written
+        // out to use the swapped force kept
+        Real wn;
+        __m128d wf;
+        __m128d wfSwapped;
+        if constexpr (sameWrench) {
+          wn = uniformMoment;
+          wf = uniformForce;
+          wfSwapped = uniformForceSwapped;
+        } else {
+          wn = perLink[i].x;
+          wf = pairOf(perLink[i].y);
+          wfSwapped = swapped(wf);
+        }
+        const __m128d centreCrossWf = _mm_mul_pd(centre, wfSwapped);
+        const Real pn = moment - (wn + (low(centreCrossWf) - high(centreCrossWf)));
+        const __m128d pf = _mm_sub_pd(force, wf);
+        const Real tau = torques[i];
+        const Real u = tau - pn;
+        jointBias[i] = u;
+        moment = alpha * pn + crossOf(r, pf) + gamma * tau;
+        force = _mm_add_pd(pf, _mm_mul_pd(beta, _mm_set1_pd(u)));
+      }
+      inertiaCarried = {xx, low(xyXz), high(xyXz), low(yyZz), low(yz), high(yyZz)};
+      biasCarried = {moment, low(force), high(force)};
+    };
+    if (wrenches.uniform)
+      sweep(std::true_type{});
+    else
+      sweep(std::false_type{});
     return true;
   }
 #endif
