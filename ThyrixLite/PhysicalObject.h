@@ -38,10 +38,35 @@ class PhysicalObject : public GraphicalObject {
   PhysicalObject& operator=(const PhysicalObject&) = delete;
   ~PhysicalObject() override = default;
 
-  // The fields every step reads come first, together: each phase that visits the bodies
-  // then reads one or two cache lines of each, not three or four.
-  Vector2 r;           ///< position of the centre of mass, world coordinates (m)
-  real alpha = 0;      ///< orientation (rad, counter-clockwise)
+  // The fields every step reads come first, together (184 bytes with the object's first 16),
+  // ordered so that each phase that visits the bodies reads few cache lines of each (a pile's
+  // circles, in simulated caches, about as few as before the direction cache came here). The
+  // pose sits in the 64 bytes from the 64th with the flags and Primitive's direction cache: an
+  // articulated link (a CappedRectangle, aligned to 64 bytes) is placed by its agent and read
+  // back by the simulator in that one line at each step, not two.
+  /// This step's contacts of this object: a view into the simulator's contact storage, valid
+  /// until the next step starts.
+  std::span<ContactInfo> contacts;
+  Vector2 boxMin;  ///< lower corner of the axis-aligned bounding box, updated each step
+  Vector2 boxMax;  ///< upper corner of the axis-aligned bounding box, updated each step
+
+ private:
+  // Primitive's cache of its direction, `(cos, sin)` of directionAngle_ (Primitive::direction()
+  // and place()), unused by other objects. It belongs to the primitive but sits here, next to
+  // the pose: a link's kinematics writes both at each step and the simulator reads them back
+  // (measured: one line instead of two, for a chain of 1000 links).
+  Vector2 direction_{1, 0};
+
+ public:
+  Vector2 r;       ///< position of the centre of mass, world coordinates (m)
+  real alpha = 0;  ///< orientation (rad, counter-clockwise)
+
+ private:
+  // (After alpha: place() writes the two, equal, with one store; and the pairs above are at
+  // multiples of 16 bytes, each stored at once.)
+  real directionAngle_ = 0;
+
+ public:
   bool fixed = false;  ///< a fixed object never moves: it has infinite mass
 
  private:
@@ -49,6 +74,9 @@ class PhysicalObject : public GraphicalObject {
   // (private: a subclass cannot make it disagree with the sensors). The simulator notes such
   // primitives as it reads their pose, from the same cache line (in what is otherwise padding).
   bool sensing_ = false;
+  // Primitive's: true when it keeps a fixed pose in its owner's frame (Primitive::attachTo).
+  // Here, in padding next to the pose, for the same reason as the direction above.
+  bool rigid_ = true;
 
  public:
   /// Objects sharing a non-zero group never touch each other (the bodies of one agent, say);
@@ -60,11 +88,6 @@ class PhysicalObject : public GraphicalObject {
   real I;                   ///< moment of inertia about the centre of mass: torque per unit rate
   Vector2 externalForce;    ///< force accumulated for the next step, reset after use (N)
   real externalTorque = 0;  ///< torque accumulated for the next step, reset after use (N m)
-  Vector2 boxMin;           ///< lower corner of the axis-aligned bounding box, updated each step
-  Vector2 boxMax;           ///< upper corner of the axis-aligned bounding box, updated each step
-  /// This step's contacts of this object: a view into the simulator's contact storage, valid
-  /// until the next step starts.
-  std::span<ContactInfo> contacts;
 
   /// Phase 5 of a step: velocities from the accumulated external force and torque alone,
   /// `v = F / m`, `omega = torque / I`; the accumulators are then reset to zero. (With a
@@ -202,7 +225,7 @@ class PhysicalObject : public GraphicalObject {
 
   friend class World;
   friend class Simulator;
-  friend class Primitive;  // keeps sensing_
+  friend class Primitive;  // keeps sensing_, rigid_ and the direction cache
   std::vector<Primitive*> primitives_;
   std::vector<std::unique_ptr<PhysicalObject>> subBodies_;  // handed to the world on registration
 };

@@ -6,6 +6,7 @@
 #include <ThyrixLite/TactileSensors.h>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 
@@ -96,15 +97,22 @@ class Primitive : public PhysicalObject {
  private:
   friend class Simulator;  // clears and finishes the sensors around each solve
 
-  // First, next to each other: what every step writes and reads of an articulated link
-  // besides its pose (place(), then the simulator's direction() and rigidlyAttached()), in 26
-  // bytes at the same place in a cache line as `r` to `sensing_` (the object's 16th to 42nd
-  // bytes, 3 lines before): both in one line each unless the object starts in the second half
-  // of a line (a chain's 1000 links are objects apart in memory: measured faster). Then what
-  // followOwner() reads. The sensors are read only when sensing_ says so.
-  Vector2 direction_{1, 0};  // (cos, sin) of directionAngle_
-  real directionAngle_ = 0;
-  bool rigid_ = true;
+  // What a link's step writes and reads (pose, flags, direction) in one 64-byte line of an
+  // object that starts a line, in double (offsetof: conditionally supported on a class with
+  // virtual functions, and so by GCC and Clang, which warn).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Winvalid-offsetof"
+  static_assert(sizeof(real) != 8 ||
+                (offsetof(PhysicalObject, direction_) / 64 ==
+                     (offsetof(PhysicalObject, collisionGroup) + 3) / 64 &&
+                 offsetof(PhysicalObject, direction_) < offsetof(PhysicalObject, r) &&
+                 offsetof(PhysicalObject, r) < offsetof(PhysicalObject, directionAngle_) &&
+                 offsetof(PhysicalObject, directionAngle_) < offsetof(PhysicalObject, sensing_) &&
+                 offsetof(PhysicalObject, rigid_) < offsetof(PhysicalObject, collisionGroup)));
+#pragma GCC diagnostic pop
+
+  // (Its direction cache and rigid_ are PhysicalObject's, next to the pose: see there.) First
+  // what followOwner() reads. The sensors are read only when sensing_ says so.
   ShapeType shapeType_;
   PhysicalObject* owner_ = this;
   Vector2 localPosition_;
