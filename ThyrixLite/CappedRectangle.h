@@ -11,7 +11,7 @@ namespace thyrix {
 /// `r -/+ (l, 0)`.
 ///
 /// Aligned to a cache line (64 bytes): what every step writes and reads of an articulated
-/// agent's link, its pose and its direction, then lies in two lines of the object, never four.
+/// agent's link, its pose, flags and direction, then lies in one line of the object, never two.
 class alignas(64) CappedRectangle : public Primitive {
  public:
   /// @param l half length of the straight part
