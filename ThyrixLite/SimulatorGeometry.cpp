@@ -433,8 +433,8 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
     // A chain's link: a capsule without sensors, placed by its owner, that moved, its half
     // axis at hand (the pose's, or the direction cached by the primitive: no sine or cosine).
     // Done here as updateComposedShape does it; false, nothing written, for every other shape.
-    // Its grid box is that of slot @p slot (its caller's run knows it: no look-up).
-    // Its grid box is added to @p extents (see the run below).
+    // Its grid box is that of slot @p slot (its caller's run knows it: no look-up), and is
+    // added to @p extents (see the run below).
     const auto updateLink = [&](std::uint32_t s, std::uint32_t slot,
                                 SweepAndPrune::Extents& extents) {
       const Primitive& primitive = *shapes[s].primitive;
