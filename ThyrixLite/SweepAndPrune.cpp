@@ -8,20 +8,22 @@
 namespace thyrix {
 namespace {
 
-/// A box's lower and upper sides along @p axis (0 x, 1 y).
+/// @p point's coordinate along @p axis (0 x, 1 y).
+template <int axis>
+real along(const Vector2& point) {
+  if constexpr (axis == 0)
+    return point.x;
+  else
+    return point.y;
+}
+/// A box's lower and upper sides along @p axis.
 template <int axis>
 real lowerOf(const BoundingBox& box) {
-  if constexpr (axis == 0)
-    return box.lower.x;
-  else
-    return box.lower.y;
+  return along<axis>(box.lower);
 }
 template <int axis>
 real upperOf(const BoundingBox& box) {
-  if constexpr (axis == 0)
-    return box.upper.x;
-  else
-    return box.upper.y;
+  return along<axis>(box.upper);
 }
 
 /// The box at byte offset @p offset from @p base (the order holds offsets: reading a box then
