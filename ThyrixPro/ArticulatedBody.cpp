@@ -93,7 +93,8 @@ ArticulatedBody::ArticulatedBody(real baseMass, real baseInertia,
   linkMasses_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     placements_[i] = {links_[i].jointPosition, links_[i].centerOfMass};
-    linkMasses_[i] = {links_[i].mass, links_[i].inertia};
+    const ArticulatedLink& link = links_[i];
+    linkMasses_[i] = {link.mass, link.inertia + link.mass * link.centerOfMass.lengthSquared()};
   }
   articulatedInertia_.assign(n + 1, SymmetricMatrix3{});
   bias_.assign(n + 1, Vector3{});

@@ -396,8 +396,10 @@ class ArticulatedBody {
   };
   /// A link's quasistatic mass and inertia: what the inward pass reads.
   struct LinkMass {
-    real mass = 0;     ///< ArticulatedLink::mass
-    real inertia = 0;  ///< ArticulatedLink::inertia
+    real mass = 0;  ///< ArticulatedLink::mass
+    /// I + m |c|^2, the inertia about the joint (c = ArticulatedLink::centerOfMass): |c| does
+    /// not change as the link turns, so it is computed once, not in every inertia pass.
+    real inertiaAboutJoint = 0;
   };
   std::vector<LinkPlacement> placements_;  ///< per link
   std::vector<LinkMass> linkMasses_;       ///< per link

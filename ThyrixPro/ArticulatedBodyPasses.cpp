@@ -143,12 +143,11 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
       Real moment = 0;
       __m128d force = zero;
       for (std::size_t i = links_.size(); i-- > 0;) {
-        // da = spatialInertia(m, I, c) + carried
+        // da = ownInertia(i) + carried
         const Real m = links[i].mass;
-        const Vector2 c = centres[i];
         const __m128d centre = pairOf(centres[i].x);
         const __m128d mm = _mm_set1_pd(m);
-        const Real dxx = (links[i].inertia + m * (c.x * c.x + c.y * c.y)) + xx;
+        const Real dxx = links[i].inertiaAboutJoint + xx;
         // (-m c.y, m c.x) + (xy, xz)
         const __m128d b = _mm_add_pd(_mm_mul_pd(_mm_xor_pd(mm, negateLow), swapped(centre)), xyXz);
         const __m128d dyyZz = _mm_add_pd(mm, yyZz);
@@ -234,6 +233,14 @@ void ArticulatedBody::inwardPass(const Wrenches& wrenches, const real* torques) 
   const auto carriedBias = [&](std::size_t slot, const Vector3& carried) {
     return !anyWrench ? carried : carried - translateForceBack(wrenches.at(slot), comOffset_[slot]);
   };
+  // Link i's spatialInertia() about its joint, with the xx that does not change as it turns
+  // (LinkMass): the same in every path, so that they all give the same bits.
+  const auto ownInertia = [&](std::size_t i) {
+    const LinkMass& link = linkMasses_[i];
+    const Vector2 c = comOffset_[i + 1];
+    return SymmetricMatrix3{
+        link.inertiaAboutJoint, -link.mass * c.y, link.mass * c.x, link.mass, 0, link.mass};
+  };
   SymmetricMatrix3 inertiaCarried;
   Vector3 biasCarried;
   // Link i within a chain (the parent is the next link visited, no other child): the terms
@@ -242,10 +249,7 @@ void ArticulatedBody::inwardPass(const Wrenches& wrenches, const real* torques) 
   const auto chainStep = [&](std::size_t i, auto withWrenches) {
     const std::size_t self = i + 1;
     if constexpr (withInertias) {
-      const LinkMass& link = linkMasses_[i];
-      const SymmetricMatrix3 da =
-          spatialInertia(link.mass, link.inertia, comOffset_[self]) + inertiaCarried;
-      inertiaCarried = articulateJoint<damped>(i, da);
+      inertiaCarried = articulateJoint<damped>(i, ownInertia(i) + inertiaCarried);
     }
     Vector3 pa = biasCarried;
     if constexpr (decltype(withWrenches)::value)
@@ -271,10 +275,7 @@ void ArticulatedBody::inwardPass(const Wrenches& wrenches, const real* torques) 
       // chainStep(i, ...) with the test of carriedBias() (measured: in this loop, calls of
       // chainStep cost the plain chain's loop above 2 instructions a link).
       if constexpr (withInertias) {
-        const LinkMass& link = linkMasses_[i];
-        const SymmetricMatrix3 da =
-            spatialInertia(link.mass, link.inertia, comOffset_[self]) + inertiaCarried;
-        inertiaCarried = articulateJoint<damped>(i, da);
+        inertiaCarried = articulateJoint<damped>(i, ownInertia(i) + inertiaCarried);
       }
       biasCarried = passBias(i, carriedBias(self, biasCarried), torques[i]);
       continue;
@@ -283,8 +284,7 @@ void ArticulatedBody::inwardPass(const Wrenches& wrenches, const real* torques) 
     const bool carry = parent == i;
     const bool gathers = gathers_[self] != 0;
     if constexpr (withInertias) {
-      const LinkMass& link = linkMasses_[i];
-      SymmetricMatrix3 da = spatialInertia(link.mass, link.inertia, comOffset_[self]);
+      SymmetricMatrix3 da = ownInertia(i);
       if (gathers) da = da + articulatedInertia_[self];
       da = da + inertiaCarried;
       if constexpr (general) articulatedInertia_[self] = da;
