@@ -227,6 +227,8 @@ class Simulator : public World {
   /// detected before, as of the start of updateBody).
   void updateComposedBody(const BodyState& state, bool changed, bool known);
   void addCachedBox(std::uint32_t shape, Vector2& boxMin, Vector2& boxMax) const;
+  /// Whether @p object has tactile sensors or is rigidly attached (sensing_ || rigid_).
+  static bool sensingOrRigid(const PhysicalObject& object);
   /// addCachedBox for a circle or capsule of geometry @p geometry.
   static void addGeometryBox(const ShapeGeometry& geometry, Vector2& boxMin, Vector2& boxMax);
   void updateShape(std::uint32_t shape, bool poseKnown, bool standalone, Vector2& boxMin,
