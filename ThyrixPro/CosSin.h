@@ -87,10 +87,10 @@ inline Vector2 cosSin(real a) {
 }
 
 /// cosSin() of every angle of @p angles into @p out (the same size), each of which
-/// cosSinKernelTakes(): one loop that vectorizes, four angles at a time where the processor
-/// has AVX2 (GCC or Clang on x86-64, chosen at run time), else two (SSE2) or one: the same
-/// operations on each angle, so the same bits either way. (A caller that computes the angles
-/// in a loop of its own checks them there, for free.)
+/// cosSinKernelTakes(): one loop that vectorizes, eight angles at a time where the processor
+/// has AVX-512, four where it has AVX2 (GCC or Clang on x86-64, chosen at run time), else two
+/// (SSE2) or one: the same operations on each angle, so the same bits either way. (A caller that
+/// computes the angles in a loop of its own checks them there, for free.)
 void cosSinKernel(std::span<const real> angles, std::span<Vector2> out);
 
 /// cosSin() of every angle of @p angles into @p out (the same size): cosSinKernel(), then

@@ -3,9 +3,10 @@
 /// @brief Which optional instruction sets the processor runs, for the few loops that have a
 /// copy compiled for them and choose it at run time.
 
-/// Defined where a function can be compiled for AVX or AVX2 (`[[gnu::target("avx")]]`,
-/// `[[gnu::target("avx2")]]`) and chosen at run time by processorHasAvx() or
-/// processorHasAvx2(): GCC or Clang on x86-64. Elsewhere the portable loops run.
+/// Defined where a function can be compiled for AVX, AVX2 or AVX-512 (`[[gnu::target("avx")]]`,
+/// `[[gnu::target("avx2")]]`, `[[gnu::target("avx512f")]]`) and chosen at run time by
+/// processorHasAvx(), processorHasAvx2() or processorHasAvx512(): GCC or Clang on x86-64.
+/// Elsewhere the portable loops run.
 #if defined(__GNUC__) && defined(__x86_64__)
 #define THYRIX_AVX_DISPATCH 1
 #endif
@@ -25,6 +26,14 @@ inline bool processorHasAvx() {
 /// fused multiply-add (that is FMA's): which copy runs then never changes a result.
 inline bool processorHasAvx2() {
   static const bool has = __builtin_cpu_supports("avx2") != 0;
+  return has;
+}
+
+/// Whether the processor runs AVX-512 (its foundation, AVX512F), asked once. As for
+/// processorHasAvx2(): the same operations in each lane as the portable loop, without fused
+/// multiply-adds, so the same bits.
+inline bool processorHasAvx512() {
+  static const bool has = __builtin_cpu_supports("avx512f") != 0;
   return has;
 }
 #endif

@@ -212,15 +212,16 @@ TEST(SpatialAlgebraTest, CosSinOfManyAnglesIsCosSinOfEach) {
 }
 
 TEST(SpatialAlgebraTest, CosSinKernelIsCosSinOfEachAtEverySizeAndOffset) {
-  // The kernel runs four angles at a time where the processor has AVX2, two with SSE2: every
-  // count and start exercises the vector loops' leftovers; each pair must have cosSin()'s bits.
+  // The kernel runs eight angles at a time where the processor has AVX-512, four with AVX2,
+  // two with SSE2: every count and start exercises the vector loops' leftovers; each pair must
+  // have cosSin()'s bits.
   MTRandom random(19);
   std::vector<real> angles;
   for (int k = 0; k < 40; ++k) angles.push_back(draw(random, -100, 100));
   angles[5] = real(0);
   angles[6] = -real(0);
   std::vector<Vector2> out(angles.size());
-  for (std::size_t start = 0; start < 4; ++start) {
+  for (std::size_t start = 0; start < 8; ++start) {
     for (std::size_t count = 0; start + count <= angles.size(); ++count) {
       std::fill(out.begin(), out.end(), Vector2{7, 7});
       cosSinKernel(std::span<const real>(angles).subspan(start, count),
