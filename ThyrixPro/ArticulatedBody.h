@@ -415,8 +415,9 @@ class ArticulatedBody {
   /// Link @p i's step of the inward bias pass, given its bias @p pa and its joint torque
   /// @p tau: sets u_i and returns the bias it passes to its parent (about the parent's origin).
   Vector3 passBias(std::size_t i, const Vector3& pa, real tau);
-  /// inwardPass<true, false, false>()'s loop over a plain chain (allInChain_) with
-  /// @p wrenches (any()), in SSE2 pairs with the same bits: leaves
+  /// inwardPass<true, false, false>()'s loop over a plain chain (allInChain_), with or
+  /// without @p wrenches, in SSE2 pairs (in VEX form with AVX, the same bits), re-associated
+  /// for shorter dependency chains (so not chainStep's last bits): leaves
   /// the terms it carries to the base in @p inertiaCarried and @p biasCarried and returns true;
   /// false, having done nothing, without SSE2 or for a real type other than double (a
   /// template, so that a float build never instantiates the pairs).

@@ -5,6 +5,8 @@
 /// ArticulatedBody.cpp, with the conventions (frames, world-aligned axes, spatial vectors).
 #include <ThyrixPro/ArticulatedBody.h>
 #include <ThyrixPro/SpatialAlgebra.h>
+#include <Tools/Inlining.h>
+#include <Tools/ProcessorFeatures.h>
 
 #include <algorithm>
 #include <type_traits>
@@ -96,112 +98,178 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
                                            SymmetricMatrix3& inertiaCarried, Vector3& biasCarried) {
 #if defined(__SSE2__)
   if constexpr (std::is_same_v<Real, double>) {
-    // The operations of inwardPass()'s chainStep (with inertias, undamped, with wrenches) on
-    // the same values in the same order, so the same bits, with the pairs that go together in
-    // one SSE2 register: (xy, xz) and (yy, zz) of the inertia, the force of the bias, beta, A h.
-    // Held as scalars, the terms of both chains did not fit in the 16 registers: GCC kept some
-    // on the stack, the carried xx among them (measured: the pass 20% slower than in pairs).
+    // inwardPass()'s chainStep (with inertias, undamped) in SSE2 pairs: (xy, xz) and (yy, zz)
+    // of the inertia, the force of the bias, beta, A h. Held as scalars, the terms of both
+    // chains did not fit in the 16 registers (measured: 20% slower than in pairs).
+    //
+    // articulateJoint<false>'s algebra, re-associated (so not chainStep's bits: the chain
+    // without wrenches runs here too, to keep the bits of zero wrenches). Each link was bound
+    // by two chains of ~22 cycles: the division's (d -> 1/d -> h.Ah - g^2/d -> own + that ->
+    // next d) and the one through beta, the carried (yy, zz), yz, A h and h.Ah into the next
+    // d. Here the child builds the parent's inertia D_p = M_p + D_i - b b^T / d_i with the
+    // parent's own terms M_p added first and 1 / d_i multiplied last:
+    //   d_p = (own_p + h.Ah) - (g g) / d_i,   (yy, zz)_p = (m_p + (yy, zz)) - (b b) / d_i,
+    //   yz_p = yz - (b_x b_y) / d_i,          b_p = (own b_p + A h) - beta g
+    // so the next division waits for one product and one difference after this one, and
+    // the lower block's chain for one product (not beta's and then its own).
     static_assert(std::is_standard_layout_v<Vector2> && sizeof(Vector2) == 2 * sizeof(Real) &&
                       std::is_standard_layout_v<Vector3> && sizeof(Vector3) == 3 * sizeof(Real),
                   "vectors are read as their coordinates");
-    // Two coordinates from @p first on (a Vector2, or a Vector3's force).
-    const auto pairOf = [](const real& first) {
-      return _mm_loadu_pd(reinterpret_cast<const Real*>(&first));
+    const std::size_t n = links_.size();
+    if (n == 0) {
+      inertiaCarried = {};
+      biasCarried = {};
+      return true;
+    }
+    // What a sweep reads and writes (passed on to the copy compiled for AVX).
+    struct Sweep {
+      const Wrenches* wrenches;
+      const Real* torques;
+      const LinkMass* links;
+      const Vector2* centres;  // link i's at i
+      const Vector2* shifts;
+      JointTerms* terms;
+      Real* jointBias;
+      std::size_t n;
+      SymmetricMatrix3* inertiaCarried;
+      Vector3* biasCarried;
     };
-    const auto low = [](__m128d pair) { return _mm_cvtsd_f64(pair); };
-    const auto high = [](__m128d pair) { return _mm_cvtsd_f64(_mm_unpackhi_pd(pair, pair)); };
-    const auto swapped = [](__m128d pair) { return _mm_shuffle_pd(pair, pair, 1); };
-    // a.x b.y - a.y b.x from (a.x, a.y) and (b.x, b.y)
-    const auto crossOf = [&](__m128d a, __m128d b) {
-      const __m128d products = _mm_mul_pd(a, swapped(b));
-      return low(products) - high(products);
-    };
-    const __m128d negateLow = _mm_set_pd(0.0, -0.0);
-    const __m128d zero = _mm_setzero_pd();
-    const LinkMass* const links = linkMasses_.data();
-    const Vector2* const centres = comOffset_.data() + 1;  // link i's at i
-    const Vector2* const shifts = shift_.data();
-    JointTerms* const terms = terms_.data();
-    Real* const jointBias = jointBias_.data();
-    // In two copies: a wrench per link, or the same on every link (@p uniform true), whose
-    // force and its swapped pair are then read once, before the loop.
-    const auto sweep = [&](auto uniform) {
-      constexpr bool sameWrench = decltype(uniform)::value;
-      // Link i's at i (unless sameWrench: perBody is then null).
-      const Vector3* const perLink = sameWrench ? nullptr : wrenches.perBody + 1;
-      const Real uniformMoment = wrenches.link.x;
-      const __m128d uniformForce = pairOf(wrenches.link.y);
-      const __m128d uniformForceSwapped = swapped(uniformForce);
-      // The carried inertia and bias.
-      Real xx = 0;
-      __m128d xyXz = zero;
-      __m128d yyZz = zero;
-      // In the low lane. It starts at +0 and is never -0 (x - y is -0 only for x = -0), so
-      // yz is 0 + yz (SymmetricMatrix3's sum of the own inertia's yz = 0 and the carried one)
-      // bit for bit, without the addition.
+    const Sweep sweepTerms{
+        &wrenches,       torques,       linkMasses_.data(), comOffset_.data() + 1,
+        shift_.data(),   terms_.data(), jointBias_.data(),  n,
+        &inertiaCarried, &biasCarried};
+    // In three copies (@p kind): no wrench (0), a wrench per link (1), or the same on every
+    // link (2).
+    const auto sweep = [](const Sweep& w, auto kind) THYRIX_LAMBDA_ALWAYS_INLINE {
+      constexpr int wrenchKind = decltype(kind)::value;
+      // In locals: the stores to terms and jointBias might otherwise be taken to change them.
+      const LinkMass* const links = w.links;
+      const Vector2* const centres = w.centres;
+      const Vector2* const shifts = w.shifts;
+      JointTerms* const terms = w.terms;
+      const Real* const jointTorques = w.torques;
+      Real* const jointBias = w.jointBias;
+      // Two coordinates from @p first on (a Vector2, or a Vector3's force).
+      const auto pairOf = [](const real& first) {
+        return _mm_loadu_pd(reinterpret_cast<const Real*>(&first));
+      };
+      const auto low = [](__m128d pair) { return _mm_cvtsd_f64(pair); };
+      const auto high = [](__m128d pair) { return _mm_cvtsd_f64(_mm_unpackhi_pd(pair, pair)); };
+      const auto swapped = [](__m128d pair) { return _mm_shuffle_pd(pair, pair, 1); };
+      // a.x b.y - a.y b.x from (a.x, a.y) and (b.x, b.y)
+      const auto crossOf = [&](__m128d a, __m128d b) {
+        const __m128d products = _mm_mul_pd(a, swapped(b));
+        return low(_mm_sub_sd(products, _mm_unpackhi_pd(products, products)));
+      };
+      // A h = (yz r.x - yy r.y, zz r.x - yz r.y) from (yy, zz), yz (low lane) and r
+      const auto aTimesH = [](__m128d yyZz, __m128d yz, Real rx, Real ry) {
+        return _mm_sub_pd(_mm_mul_pd(_mm_move_sd(yyZz, yz), _mm_set1_pd(rx)),
+                          _mm_mul_pd(_mm_unpacklo_pd(yyZz, yz), _mm_set1_pd(ry)));
+      };
+      const __m128d negateLow = _mm_set_pd(0.0, -0.0);
+      const __m128d zero = _mm_setzero_pd();
+      // (-m c.y, m c.x), the (xy, xz) of link i's own inertia
+      const auto ownB = [&](std::size_t i) {
+        return _mm_mul_pd(_mm_xor_pd(_mm_set1_pd(links[i].mass), negateLow),
+                          swapped(pairOf(centres[i].x)));
+      };
+      const Vector3* const perLink = wrenchKind == 1 ? w.wrenches->perBody + 1 : nullptr;
+      // The uniform wrench is read in the loop (from memory, as an operand): kept in
+      // registers, it left too few for the terms carried.
+      const Vector3& uniform = w.wrenches->link;
+      // Link i's articulated inertia D_i before its joint, as the child left it: xx, b = (xy,
+      // xz), (yy, zz), and yz (low lane; +0 at the leaf and never -0, as x - y is -0 only for
+      // x = -0, so yz is 0 + yz bit for bit without the addition).
+      const std::size_t leaf = w.n - 1;
+      Real dxx = links[leaf].inertiaAboutJoint;
+      __m128d b = ownB(leaf);
+      __m128d yyZz = _mm_set1_pd(links[leaf].mass);
       __m128d yz = zero;
       Real moment = 0;
       __m128d force = zero;
-      for (std::size_t i = links_.size(); i-- > 0;) {
-        // da = ownInertia(i) + carried
-        const Real m = links[i].mass;
-        const __m128d centre = pairOf(centres[i].x);
-        const __m128d mm = _mm_set1_pd(m);
-        const Real dxx = links[i].inertiaAboutJoint + xx;
-        // (-m c.y, m c.x) + (xy, xz)
-        const __m128d b = _mm_add_pd(_mm_mul_pd(_mm_xor_pd(mm, negateLow), swapped(centre)), xyXz);
-        const __m128d dyyZz = _mm_add_pd(mm, yyZz);
-        // articulateJoint<false>(i, da)
+      const auto step = [&](std::size_t i, auto parentConstant) THYRIX_LAMBDA_ALWAYS_INLINE {
+        constexpr bool hasParent = decltype(parentConstant)::value;
+        const std::size_t p = hasParent ? i - 1 : i;
+        const Real inverseD = 1 / dxx;
+        // What does not wait for the division first, each term used as soon as it is known:
+        // GCC allocates registers in about this order, and terms kept longer went to the stack
+        // (h.Ah, on the division's chain, and the carried force).
         const __m128d r = pairOf(shifts[i].x);
         const Real g = crossOf(r, b);
-        // A h = (yz r.x - yy r.y, zz r.x - yz r.y)
-        const __m128d ah =
-            _mm_sub_pd(_mm_mul_pd(_mm_move_sd(dyyZz, yz), _mm_set1_pd(shifts[i].x)),
-                       _mm_mul_pd(_mm_unpacklo_pd(dyyZz, yz), _mm_set1_pd(shifts[i].y)));
+        const Real gg = g * g;
+        const __m128d ah = aTimesH(yyZz, yz, shifts[i].x, shifts[i].y);
         const Real hah = crossOf(r, ah);
-        const Real inverseD = 1 / dxx;
-        xx = hah - g * g * inverseD;
-        const __m128d beta = _mm_mul_pd(b, _mm_set1_pd(inverseD));
+        // The parent's terms as above, with its own added.
+        const Real ownPlusHah = hasParent ? links[p].inertiaAboutJoint + hah : hah;
+        const __m128d bb = _mm_mul_pd(b, b);             // (xy xy, xz xz)
+        const __m128d bxBy = _mm_mul_sd(b, swapped(b));  // xy xz (low lane)
+        const __m128d ownYyZz = hasParent ? _mm_add_pd(_mm_set1_pd(links[p].mass), yyZz) : yyZz;
+        const __m128d ownAh = hasParent ? _mm_add_pd(ownB(p), ah) : ah;
+        const __m128d inverseDs = _mm_set1_pd(inverseD);
+        const __m128d beta = _mm_mul_pd(b, inverseDs);
         const Real alpha = -g * inverseD;
         const Real gamma = (dxx + g) * inverseD;
+        const __m128d betaG = _mm_mul_pd(beta, _mm_set1_pd(g));
+        if constexpr (hasParent) {
+          dxx = ownPlusHah - gg * inverseD;
+          yyZz = _mm_sub_pd(ownYyZz, _mm_mul_pd(bb, inverseDs));
+          yz = _mm_sub_sd(yz, _mm_mul_sd(bxBy, inverseDs));
+          b = _mm_sub_pd(ownAh, betaG);
+        } else {
+          // The terms passed to the base: articulateJoint's.
+          const __m128d xyXz = _mm_sub_pd(ah, betaG);
+          const __m128d passedYyZz = _mm_sub_pd(yyZz, _mm_mul_pd(beta, b));
+          const __m128d passedYz = _mm_sub_sd(yz, _mm_mul_sd(beta, _mm_unpackhi_pd(b, b)));
+          *w.inertiaCarried = {hah - gg * inverseD, low(xyXz),     high(xyXz),
+                               low(passedYyZz),     low(passedYz), high(passedYyZz)};
+        }
         JointTerms& t = terms[i];
         t.inverseD = inverseD;
         t.alpha = alpha;
         t.gamma = gamma;
         _mm_storeu_pd(reinterpret_cast<Real*>(&t.beta), beta);
-        xyXz = _mm_sub_pd(ah, _mm_mul_pd(beta, _mm_set1_pd(g)));
-        yyZz = _mm_sub_pd(dyyZz, _mm_mul_pd(beta, b));
-        yz = _mm_sub_sd(yz, _mm_mul_sd(beta, _mm_unpackhi_pd(b, b)));
         // passBias(i, carried - translateForceBack(w, c), tau); crossOf(centre, wf) written
-        // out to use the swapped force kept
-        Real wn;
-        __m128d wf;
-        __m128d wfSwapped;
-        if constexpr (sameWrench) {
-          wn = uniformMoment;
-          wf = uniformForce;
-          wfSwapped = uniformForceSwapped;
-        } else {
-          wn = perLink[i].x;
-          wf = pairOf(perLink[i].y);
-          wfSwapped = swapped(wf);
+        // out to use the swapped force. The shift is read again: kept from the start, it took
+        // a register the bias terms needed (GCC kept the carried force on the stack).
+        Real pn = moment;
+        __m128d pf = force;
+        if constexpr (wrenchKind != 0) {
+          const Vector3& wrench = wrenchKind == 2 ? uniform : perLink[i];
+          const __m128d wf = pairOf(wrench.y);
+          const __m128d centreCrossWf = _mm_mul_pd(pairOf(centres[i].x), swapped(wf));
+          pn = moment - (wrench.x + (low(centreCrossWf) - high(centreCrossWf)));
+          pf = _mm_sub_pd(force, wf);
         }
-        const __m128d centreCrossWf = _mm_mul_pd(centre, wfSwapped);
-        const Real pn = moment - (wn + (low(centreCrossWf) - high(centreCrossWf)));
-        const __m128d pf = _mm_sub_pd(force, wf);
-        const Real tau = torques[i];
+        const Real tau = jointTorques[i];
         const Real u = tau - pn;
         jointBias[i] = u;
-        moment = alpha * pn + crossOf(r, pf) + gamma * tau;
+        moment = alpha * pn + crossOf(pairOf(shifts[i].x), pf) + gamma * tau;
         force = _mm_add_pd(pf, _mm_mul_pd(beta, _mm_set1_pd(u)));
-      }
-      inertiaCarried = {xx, low(xyXz), high(xyXz), low(yyZz), low(yz), high(yyZz)};
-      biasCarried = {moment, low(force), high(force)};
+      };
+      for (std::size_t i = leaf; i > 0; --i) step(i, std::true_type{});
+      step(0, std::false_type{});
+      *w.biasCarried = {moment, low(force), high(force)};
     };
-    if (wrenches.uniform)
-      sweep(std::true_type{});
+    // In VEX form with AVX: the same operations (no fused multiply-add), so the same bits,
+    // with fewer instructions (measured: 76 a link, 102 in SSE2, which copies registers).
+    const auto run = [&](auto kind) {
+#if defined(THYRIX_AVX_DISPATCH)
+      const auto sweepAvx = [&sweep](const Sweep& w, auto k) __attribute__((target("avx"))) {
+        sweep(w, k);
+      };
+      if (processorHasAvx()) {
+        sweepAvx(sweepTerms, kind);
+        return;
+      }
+#endif
+      sweep(sweepTerms, kind);
+    };
+    if (!wrenches.any())
+      run(std::integral_constant<int, 0>{});
+    else if (wrenches.uniform)
+      run(std::integral_constant<int, 2>{});
     else
-      sweep(std::false_type{});
+      run(std::integral_constant<int, 1>{});
     return true;
   }
 #endif
@@ -260,8 +328,7 @@ void ArticulatedBody::inwardPass(const Wrenches& wrenches, const real* torques) 
   const bool plainChain = !general && allInChain_;
   bool done = false;  // by plainChainInwardPass()
   if constexpr (withInertias && !damped)
-    done = plainChain && anyWrench &&
-           plainChainInwardPass<real>(wrenches, torques, inertiaCarried, biasCarried);
+    done = plainChain && plainChainInwardPass<real>(wrenches, torques, inertiaCarried, biasCarried);
   if (plainChain && !done) {
     if (anyWrench) {
       for (std::size_t i = links_.size(); i-- > 0;) chainStep(i, std::true_type{});
