@@ -911,10 +911,10 @@ TEST(ArticulatedBodyTest, SameInputGivesBitIdenticalOutput) {
 }
 
 TEST(ArticulatedBodyTest, ZeroWrenchesGiveTheBitsOfNoWrenches) {
-  // A plain chain's inward pass with wrenches runs in SSE2 pairs, without them in the scalar
-  // loop: subtracting zero wrenches changes no bit, so the two must agree bit for bit, which
-  // holds only if the pairs do the scalar loop's operations (and the compiler fuses neither
-  // into multiply-adds of its own choosing).
+  // Subtracting zero wrenches changes no bit, so the two must agree bit for bit. A tree's
+  // inward pass takes both through one loop; a plain chain's (in double with SSE2) takes them
+  // through copies of its pairs' loop, with and without the wrenches' terms, which must then
+  // do the same operations (and the compiler must fuse none into multiply-adds of its own).
   for (const Shape shape : {Shape::Chain, Shape::Tree}) {
     const Problem p = randomProblem(30, shape, 77);
     ArticulatedBody withZeros = p.build();
