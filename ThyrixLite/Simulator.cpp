@@ -105,8 +105,7 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
     // A primitive's radius and half length are fixed at construction: kept here once, with
     // the margin of the fraction the cached margins were computed with (updateGeometry
     // recomputes every margin when the fraction changes).
-    const real margin = geometryFraction_ * primitive->radius();
-    geometry_.push_back({{}, {}, primitive->radius(), margin, 0, primitive->radius() + margin});
+    geometry_.push_back({{}, {}, primitive->radius(), geometryFraction_ * primitive->radius()});
     shapePoses_.push_back({});
     shapePoses_.back().halfLength = primitive->halfLength();
     shapeMoved_.push_back(1);

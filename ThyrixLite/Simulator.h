@@ -188,7 +188,6 @@ class Simulator : public World {
     real radius;
     real margin;      // speculativeFraction * radius
     real travel = 0;  // speculativeTravel * the last step's displacement (0 at rest)
-    real reach = 0;   // radius + margin: the grid box's widening before the travel
   };
 
   /// What detection remembers of a body, to notice that it moved or changed its filters.

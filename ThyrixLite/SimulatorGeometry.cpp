@@ -111,16 +111,15 @@ inline void addExtents(const BoundingBox& box, SweepAndPrune::Extents& extents) 
 
 /// A capsule's geometry from its centre @p r and half axis @p axis, exactly as
 /// Simulator::updateShape computes it: its ends @p p0 and @p p1 and its @p travel (from the
-/// ends' last values when @p known), its grid box @p gridBox (widened by @p reach, the radius
-/// plus the margin, and by the travel), and its box widened by the radius taken into the body box
-/// (@p boxMin,
+/// ends' last values when @p known), its grid box @p gridBox (widened by @p radius, @p margin
+/// and the travel), and its box widened by the radius taken into the body box (@p boxMin,
 /// @p boxMax). In double, with SSE2, the x and y of each step in one instruction (a chain's
 /// 1000 capsules in every step): the same operations in the same order on the same values, so
 /// the same bits (std::min(a, b) is `b < a ? b : a`, which is MINPD(b, a); std::max(a, b) is
 /// MAXPD(b, a)).
 template <class Real>
 inline void capsuleGeometry(Vector2 r, Vector2 axis, Vector2& p0, Vector2& p1, Real radius,
-                            Real reach, Real& travel, Real travelFactor, bool known,
+                            Real margin, Real& travel, Real travelFactor, bool known,
                             BoundingBox& gridBox, Vector2& boxMin, Vector2& boxMax) {
 #if defined(__SSE2__)
   if constexpr (std::is_same_v<Real, double>) {
@@ -149,9 +148,9 @@ inline void capsuleGeometry(Vector2 r, Vector2 axis, Vector2& p0, Vector2& p1, R
       moved = std::min(travelFactor * displacement, radius);
     }
     travel = moved;
-    const __m128d widening = _mm_set1_pd(reach + moved);
-    storePair<Real>(gridBox.lower, _mm_sub_pd(least, widening));
-    storePair<Real>(gridBox.upper, _mm_add_pd(most, widening));
+    const __m128d reach = _mm_set1_pd(radius + margin + moved);
+    storePair<Real>(gridBox.lower, _mm_sub_pd(least, reach));
+    storePair<Real>(gridBox.upper, _mm_add_pd(most, reach));
     return;
   }
 #endif
@@ -170,8 +169,9 @@ inline void capsuleGeometry(Vector2 r, Vector2 axis, Vector2& p0, Vector2& p1, R
         std::max(std::abs(d0.x) + std::abs(d0.y), std::abs(d1.x) + std::abs(d1.y));
     travel = std::min(travelFactor * displacement, radius);
   }
-  const Real widening = reach + travel;
-  gridBox = {least - Vector2{widening, widening}, most + Vector2{widening, widening}};
+  const Real widening = radius + margin + travel;
+  const Vector2 reach{widening, widening};
+  gridBox = {least - reach, most + reach};
 }
 
 }  // namespace
@@ -243,7 +243,7 @@ THYRIX_ALWAYS_INLINE void Simulator::placeLinkCapsule(Vector2 r, real alpha, Vec
                                                       Vector2& boxMax) {
   pose.r = r;
   pose.alpha = alpha;
-  capsuleGeometry<real>(r, axis, g.p0, g.p1, g.radius, g.reach, g.travel, travelFactor, poseKnown,
+  capsuleGeometry<real>(r, axis, g.p0, g.p1, g.radius, g.margin, g.travel, travelFactor, poseKnown,
                         gridBox, boxMin, boxMax);
 }
 
@@ -271,7 +271,7 @@ THYRIX_ALWAYS_INLINE real Simulator::updateCircle(std::uint32_t s, Vector2 r, bo
   }
   g.travel = travel;
   // The shape's own box (not the body's), widened by its speculative margin and travel.
-  const real widening = g.reach + travel;
+  const real widening = radius + g.margin + travel;
   const Vector2 reach{widening, widening};
   gridBoxes_[slot] = {r - reach, r + reach};
   return travel;
@@ -557,10 +557,7 @@ void Simulator::updateGeometry() {
   geometryFraction_ = settings_.speculativeFraction;
   geometryTravel_ = settings_.speculativeTravel;
   if (newFraction)  // the margins are kept, and depend on nothing else (radii are fixed)
-    for (ShapeGeometry& g : geometry_) {
-      g.margin = geometryFraction_ * g.radius;
-      g.reach = g.radius + g.margin;
-    }
+    for (ShapeGeometry& g : geometry_) g.margin = geometryFraction_ * g.radius;
   sensingPrimitives_.clear();
   gridExtents_ = {};
   gridExtentsCount_ = 0;
