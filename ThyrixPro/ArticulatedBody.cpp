@@ -92,8 +92,8 @@ ArticulatedBody::ArticulatedBody(real baseMass, real baseInertia,
   placements_.resize(n);
   linkMasses_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    placements_[i] = {links_[i].jointPosition, links_[i].centerOfMass};
     const ArticulatedLink& link = links_[i];
+    placements_[i] = {link.jointPosition, link.centerOfMass};
     linkMasses_[i] = {link.mass, link.inertia + link.mass * link.centerOfMass.lengthSquared()};
   }
   articulatedInertia_.assign(n + 1, SymmetricMatrix3{});

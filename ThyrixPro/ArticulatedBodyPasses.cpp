@@ -187,9 +187,9 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
       __m128d yz = zero;
       Real moment = 0;
       __m128d force = zero;
-      const auto step = [&](std::size_t i, auto parentConstant) THYRIX_LAMBDA_ALWAYS_INLINE {
-        constexpr bool hasParent = decltype(parentConstant)::value;
-        const std::size_t p = hasParent ? i - 1 : i;
+      // Link i >= 1, whose parent is link p = i - 1.
+      const auto step = [&](std::size_t i) THYRIX_LAMBDA_ALWAYS_INLINE {
+        const std::size_t p = i - 1;
         const Real inverseD = 1 / dxx;
         // What does not wait for the division first, each term used as soon as it is known:
         // GCC allocates registers in about this order, and terms kept longer went to the stack
@@ -200,29 +200,20 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
         const __m128d ah = aTimesH(yyZz, yz, shifts[i].x, shifts[i].y);
         const Real hah = crossOf(r, ah);
         // The parent's terms as above, with its own added.
-        const Real ownPlusHah = hasParent ? links[p].inertiaAboutJoint + hah : hah;
+        const Real ownPlusHah = links[p].inertiaAboutJoint + hah;
         const __m128d bb = _mm_mul_pd(b, b);             // (xy xy, xz xz)
         const __m128d bxBy = _mm_mul_sd(b, swapped(b));  // xy xz (low lane)
-        const __m128d ownYyZz = hasParent ? _mm_add_pd(_mm_set1_pd(links[p].mass), yyZz) : yyZz;
-        const __m128d ownAh = hasParent ? _mm_add_pd(ownB(p), ah) : ah;
+        const __m128d ownYyZz = _mm_add_pd(_mm_set1_pd(links[p].mass), yyZz);
+        const __m128d ownAh = _mm_add_pd(ownB(p), ah);
         const __m128d inverseDs = _mm_set1_pd(inverseD);
         const __m128d beta = _mm_mul_pd(b, inverseDs);
         const Real alpha = -g * inverseD;
         const Real gamma = (dxx + g) * inverseD;
         const __m128d betaG = _mm_mul_pd(beta, _mm_set1_pd(g));
-        if constexpr (hasParent) {
-          dxx = ownPlusHah - gg * inverseD;
-          yyZz = _mm_sub_pd(ownYyZz, _mm_mul_pd(bb, inverseDs));
-          yz = _mm_sub_sd(yz, _mm_mul_sd(bxBy, inverseDs));
-          b = _mm_sub_pd(ownAh, betaG);
-        } else {
-          // The terms passed to the base: articulateJoint's.
-          const __m128d xyXz = _mm_sub_pd(ah, betaG);
-          const __m128d passedYyZz = _mm_sub_pd(yyZz, _mm_mul_pd(beta, b));
-          const __m128d passedYz = _mm_sub_sd(yz, _mm_mul_sd(beta, _mm_unpackhi_pd(b, b)));
-          *w.inertiaCarried = {hah - gg * inverseD, low(xyXz),     high(xyXz),
-                               low(passedYyZz),     low(passedYz), high(passedYyZz)};
-        }
+        dxx = ownPlusHah - gg * inverseD;
+        yyZz = _mm_sub_pd(ownYyZz, _mm_mul_pd(bb, inverseDs));
+        yz = _mm_sub_sd(yz, _mm_mul_sd(bxBy, inverseDs));
+        b = _mm_sub_pd(ownAh, betaG);
         JointTerms& t = terms[i];
         t.inverseD = inverseD;
         t.alpha = alpha;
@@ -246,8 +237,9 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
         moment = alpha * pn + crossOf(pairOf(shifts[i].x), pf) + gamma * tau;
         force = _mm_add_pd(pf, _mm_mul_pd(beta, _mm_set1_pd(u)));
       };
-      for (std::size_t i = leaf; i > 0; --i) step(i, std::true_type{});
-      step(0, std::false_type{});
+      for (std::size_t i = leaf; i > 0; --i) step(i);
+      // Link 0's articulated inertia and the bias its child passes.
+      *w.inertiaCarried = {dxx, low(b), high(b), low(yyZz), low(yz), high(yyZz)};
       *w.biasCarried = {moment, low(force), high(force)};
     };
     // In VEX form with AVX: the same operations (no fused multiply-add), so the same bits,
@@ -270,6 +262,12 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
       run(std::integral_constant<int, 2>{});
     else
       run(std::integral_constant<int, 1>{});
+    // Link 0, whose parent is the base, as chainStep does it: its step in the loop is the same
+    // operations without a parent's own terms to add.
+    Vector3 pa = biasCarried;
+    if (wrenches.any()) pa = biasCarried - translateForceBack(wrenches.at(1), comOffset_[1]);
+    inertiaCarried = articulateJoint<false>(0, inertiaCarried);
+    biasCarried = passBias(0, pa, torques[0]);
     return true;
   }
 #endif
@@ -302,7 +300,7 @@ void ArticulatedBody::inwardPass(const Wrenches& wrenches, const real* torques) 
     return !anyWrench ? carried : carried - translateForceBack(wrenches.at(slot), comOffset_[slot]);
   };
   // Link i's spatialInertia() about its joint, with the xx that does not change as it turns
-  // (LinkMass): the same in every path, so that they all give the same bits.
+  // (LinkMass): the same in chainStep and the general loop, so that they give the same bits.
   const auto ownInertia = [&](std::size_t i) {
     const LinkMass& link = linkMasses_[i];
     const Vector2 c = comOffset_[i + 1];
