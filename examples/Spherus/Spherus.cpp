@@ -68,7 +68,9 @@ void Spherus::readSensors(Vector2 f) {
     out[contactSensors + pixels] = unit(speed);
     out[contactSensors + pixels + 1] = unit(-speed);
   }
-  sensors_[sensorCount - 1] = unit(link_->length() / parameters_.maxLinkLength);
+  // The link's anchors are the circles' centres: its length without ElasticLink::length()'s
+  // two rotations of a zero anchor (a cosine and a sine each), the same value bit for bit.
+  sensors_[sensorCount - 1] = unit((right_->r - left_->r).length() / parameters_.maxLinkLength);
 }
 
 void Spherus::applyEffectors(Vector2 f) {
