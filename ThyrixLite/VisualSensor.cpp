@@ -4,8 +4,11 @@
 #include <Tools/MathTools.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <string>
+#include <type_traits>
 
 namespace thyrix {
 namespace {
@@ -52,6 +55,28 @@ bool capsuleOutside(Vector2 offset0, Vector2 offset1, real radius, Vector2 view,
   return right && left;
 }
 
+/// The cosine and sine of an angle.
+struct CosSin {
+  real c;
+  real s;
+};
+
+/// std::cos and std::sin of @p angle, remembered for the last angle (per thread): the eyes of
+/// an agent often sit on bodies turned alike (Spherus turns both its circles to its heading),
+/// and libm's sincos costs as much as the culling of a small world. The angle is compared bit
+/// for bit (0 and -0 have sines of different signs).
+CosSin cosSin(real angle) {
+  using Bits = std::conditional_t<sizeof(real) == 8, std::uint64_t, std::uint32_t>;
+  struct Memo {
+    Bits angle;
+    CosSin value;
+  };
+  thread_local Memo memo{std::bit_cast<Bits>(real(0)), {1, 0}};  // cos 0 and sin 0, exactly
+  const Bits bits = std::bit_cast<Bits>(angle);
+  if (bits != memo.angle) memo = {bits, {std::cos(angle), std::sin(angle)}};
+  return memo.value;
+}
+
 /// @p v rotated by the angle whose cosine and sine are @p c and @p s.
 Vector2 rotate(Vector2 v, real c, real s) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
 
@@ -91,8 +116,7 @@ std::pair<real, real> VisualSensor::pixelBounds(int i) const {
 
 void VisualSensor::update(const ObjectList& objects) {
   // The body's pose: one cosine and sine for the eye, the view and the field's edges.
-  const real c = std::cos(body_->alpha);
-  const real s = std::sin(body_->alpha);
+  const auto [c, s] = cosSin(body_->alpha);
   const Vector2 eye = body_->r + rotate(localPosition_, c, s);
   const Vector2 view = rotate(localView_, c, s);
   const Vector2 rightEdge = rotate(view, cosHalfField_, -sinHalfField_);
@@ -109,46 +133,67 @@ void VisualSensor::update(const ObjectList& objects) {
   const PhysicalObject* const self = body_;
   const real halfField = halfField_;
   const bool convexField = halfField <= pi<real> / 2;
+  // An arc is at most pi wide (half of it asin(...) <= pi / 2), so it spans at most
+  // [-3 pi / 2, 3 pi / 2] unwrapped: in a field of half width below pi / 2 (with a wide margin
+  // for rounding) its wrapped image never reaches the field, and a disk's arc needs no split.
+  const bool narrow = halfField < real(0.45) * pi<real>;
 
   // Pass 1, the culling of every primitive, calls no function: the loop keeps the eye, the
   // view and the edges in registers (a call clobbers every floating-point register). The
   // primitives that may be seen are written to candidates_, sized when the world grows; if a
   // composed body gained parts since, the pass counts them, and runs again once it has room.
+  // In a narrow field (a compile-time variant, not a test per object) a disk is culled by the
+  // two edges alone: those it keeps that diskOutside() would cull lie entirely behind the eye
+  // (dot(view, offset) < -radius), their arcs more than pi / 2 from the view, so more than
+  // 0.05 pi outside the field: clipping empties them, and the pixels are the same.
   std::size_t count = 0;
-  const auto cull = [&]() {
+  const auto cull = [&](auto narrowField) {
     count = 0;
     Candidate* const out = candidates_.data();
     const std::size_t room = candidates_.size();
     for (const PhysicalObject& object : objects) {
       for (const Primitive* primitive : object.primitives()) {
+        // Circles first, with one test; borders are not seen; a capsule is culled by its
+        // bounding disk here, by its end disks in pass 2.
         const ShapeType type = primitive->shapeType();
-        if (type == ShapeType::HalfPlane) continue;  // borders are not seen
-        // A capsule is culled by its bounding disk here, by its end disks in pass 2.
-        const real radius = type == ShapeType::Circle
-                                ? primitive->radius()
-                                : primitive->radius() + primitive->halfLength();
+        real radius = primitive->radius();
+        if (type != ShapeType::Circle) {
+          if (type == ShapeType::HalfPlane) continue;
+          radius += primitive->halfLength();
+        }
         const Vector2 offset = primitive->r - eye;
+        if constexpr (decltype(narrowField)::value) {
+          // Clockwise of the right edge's line or counter-clockwise of the left one's, by more
+          // than the radius (cross(offset, rightEdge) is -cross(rightEdge, offset) exactly).
+          if (cross(offset, rightEdge) > radius || cross(leftEdge, offset) > radius) continue;
+        } else {
+          if (diskOutside(offset, radius, view, rightEdge, leftEdge, convexField)) continue;
+        }
         // The body's own primitives usually contain the eye and pass, so they are excluded
         // after the test.
-        if (diskOutside(offset, radius, view, rightEdge, leftEdge, convexField)) continue;
         if (&primitive->owner() == self) continue;
+        // A disk that contains (or touches) the eye covers every pixel, whatever else is seen
+        // (pass 2's test, with the same arithmetic): the rest of the pass is not needed.
+        if (type == ShapeType::Circle && offset.lengthSquared() <= radius * radius) return false;
         if (count < room) out[count] = Candidate{primitive, offset};
         ++count;
       }
     }
+    return true;
   };
-  cull();
-  if (count > candidates_.size()) {
+  const auto cullAll = [&] { return narrow ? cull(std::true_type{}) : cull(std::false_type{}); };
+  bool eyeOutside = cullAll();
+  if (eyeOutside && count > candidates_.size()) {
     candidates_.resize(count);
-    cull();
+    eyeOutside = cullAll();
+  }
+  if (!eyeOutside) {
+    std::fill(activations_.begin(), activations_.end(), real(1));
+    return;
   }
 
   // Pass 2: the arcs of the candidates, clipped to the field. The union does not depend on
   // the order in which they are added.
-  // An arc is at most pi wide (half of it asin(...) <= pi / 2), so it spans at most
-  // [-3 pi / 2, 3 pi / 2] unwrapped: in a field of half width below pi / 2 (with a wide margin
-  // for rounding) its wrapped image never reaches the field, and a disk's arc needs no split.
-  const bool narrow = halfField < real(0.45) * pi<real>;
   // Adds @p extent clipped to the field; false when it is the whole circle.
   const auto addExtent = [&](const AngularExtent& extent) {
     if (extent.wholeCircle) return false;
