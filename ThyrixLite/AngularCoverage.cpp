@@ -189,21 +189,19 @@ void AngularCoverage::coveredFractions(std::span<const real> bounds,
   }
   // The union is sorted and disjoint, so the bins and the intervals advance together: bin by
   // bin, skip the intervals that end at or before the bin, sum the overlaps of those that begin
-  // before its end. Each bin sums the same positive overlaps in the same order as
-  // fractionsOfBins(), from zero, so the fractions are the same bit for bit, without clearing
-  // them first.
+  // before its end. Each bin sums the same overlaps in the same order as fractionsOfBins(), from
+  // zero (those it skips as not positive are zero here: the ends are sorted too, so every
+  // interval summed ends after the bin's start), so the fractions are the same bit for bit.
   const std::size_t count = fractions.size();
-  const std::size_t n = intervals_.size();
-  std::size_t k = 0;
+  const AngularInterval* interval = intervals_.data();
+  const AngularInterval* const last = interval + intervals_.size();
   for (std::size_t i = 0; i < count; ++i) {
     const real low = bounds[i];
     const real high = bounds[i + 1];
-    while (k < n && intervals_[k].end <= low) ++k;
+    while (interval != last && interval->end <= low) ++interval;
     real sum = 0;
-    for (std::size_t j = k; j < n && intervals_[j].begin < high; ++j) {
-      const real overlap = std::min(intervals_[j].end, high) - std::max(intervals_[j].begin, low);
-      if (overlap > 0) sum += overlap;
-    }
+    for (const AngularInterval* j = interval; j != last && j->begin < high; ++j)
+      sum += std::min(j->end, high) - std::max(j->begin, low);
     fractions[i] = sum > 0 ? std::min(real(1), sum / (high - low)) : real(0);
   }
 }

@@ -105,7 +105,10 @@ Vector2 TactileSensors::cappedRectangleSectorMiddle(int k, real l, real R) const
 void TactileSensors::clear() { std::fill(activations_.begin(), activations_.end(), real(0)); }
 
 void TactileSensors::finish() {
-  for (real& a : activations_) a = std::min(real(1), a / saturation_);
+  // A local copy: the stores to the activations cannot change it, so the loop neither reloads
+  // it nor stays scalar.
+  const real saturation = saturation_;
+  for (real& a : activations_) a = std::min(real(1), a / saturation);
 }
 
 }  // namespace thyrix
