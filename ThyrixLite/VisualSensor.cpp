@@ -173,9 +173,14 @@ void VisualSensor::update(const ObjectList& objects) {
         // after the test.
         if (&primitive->owner() == self) continue;
         // A disk that contains (or touches) the eye covers every pixel, whatever else is seen
-        // (pass 2's test, with the same arithmetic): the rest of the pass is not needed.
-        if (type == ShapeType::Circle && offset.lengthSquared() <= radius * radius) return false;
-        if (count < room) out[count] = Candidate{primitive, offset};
+        // (diskExtent()'s test, with the same arithmetic): the rest of the pass is not needed,
+        // and pass 2 sees no such disk.
+        real distanceSquared = 0;
+        if (type == ShapeType::Circle) {
+          distanceSquared = offset.lengthSquared();
+          if (distanceSquared <= radius * radius) return false;
+        }
+        if (count < room) out[count] = Candidate{primitive, offset, distanceSquared};
         ++count;
       }
     }
@@ -203,19 +208,18 @@ void VisualSensor::update(const ObjectList& objects) {
     return true;
   };
   // Adds a candidate's arc; false when the eye is inside (or touching) it: every pixel sees it.
-  const auto addArc = [&](const Candidate& candidate) {
+  const auto addArc = [&](const Candidate& candidate, auto narrowField) {
     const Primitive* const primitive = candidate.primitive;
     const real radius = primitive->radius();
     if (primitive->shapeType() == ShapeType::Circle) {
-      if (!narrow) return addExtent(diskExtent(eye, view, primitive->r, radius));
+      if constexpr (!decltype(narrowField)::value)
+        return addExtent(diskExtent(eye, view, primitive->r, radius));
       // diskExtent() and splitAtPi() inlined with the same arithmetic, bit for bit: in a
       // field narrower than pi the pieces splitAtPi() makes of an arc crossing +-pi (or its
       // shift of an arc whose rounded middle passes +-pi) lie outside the field, so clipping
       // the unsplit arc gives the same intervals (VisualSensorTest's
-      // MatchesTheExtentFunctionsBitForBit checks).
-      const real distanceSquared = candidate.offset.lengthSquared();
-      if (distanceSquared <= radius * radius) return false;
-      const real half = halfAngle(radius, std::sqrt(distanceSquared));
+      // MatchesTheExtentFunctionsBitForBit checks). Pass 1 found the eye outside the disk.
+      const real half = halfAngle(radius, std::sqrt(candidate.distanceSquared));
       const real direction = angleBetween(view, candidate.offset);
       coverage_.add(AngularInterval{std::max(direction - half, -halfField),
                                     std::min(direction + half, halfField)});
@@ -230,11 +234,14 @@ void VisualSensor::update(const ObjectList& objects) {
       return true;
     return addExtent(capsuleExtent(eye, view, p0, p1, radius));
   };
-  for (std::size_t k = 0; k < count; ++k) {
-    if (!addArc(candidates_[k])) {
-      std::fill(activations_.begin(), activations_.end(), real(1));
-      return;
-    }
+  const auto addArcs = [&](auto narrowField) {
+    for (std::size_t k = 0; k < count; ++k)
+      if (!addArc(candidates_[k], narrowField)) return false;
+    return true;
+  };
+  if (!(narrow ? addArcs(std::true_type{}) : addArcs(std::false_type{}))) {
+    std::fill(activations_.begin(), activations_.end(), real(1));
+    return;
   }
   coverage_.merge();
   coverage_.coveredFractions(bounds_, activations_);

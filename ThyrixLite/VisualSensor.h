@@ -89,10 +89,12 @@ class VisualSensor {
   real halfField_;  // half the field of view
   real cosHalfField_;
   real sinHalfField_;
-  /// A primitive that update()'s culling let through, and its centre's offset from the eye.
+  /// A primitive that update()'s culling let through, its centre's offset from the eye, and
+  /// for a circle the offset's squared length.
   struct Candidate {
     const Primitive* primitive;
     Vector2 offset;
+    real distanceSquared;
   };
 
   std::vector<real> activations_;
