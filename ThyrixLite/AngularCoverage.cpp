@@ -90,32 +90,37 @@ AngularExtent capsuleExtent(Vector2 eye, real reference, Vector2 p0, Vector2 p1,
 void AngularCoverage::merge() {
   if (merged_) return;
   merged_ = true;
-  if (intervals_.empty()) return;
-  const auto byBegin = [](const AngularInterval& a, const AngularInterval& b) {
-    return a.begin < b.begin;
-  };
+  AngularInterval* const first = intervals_.data();
+  AngularInterval* const last = first + intervals_.size();
+  if (first == last) return;
   // A sensor sees a handful of intervals at a time: an insertion sort does them with a fraction
-  // of std::sort's overhead. The order of equal begins does not matter: an interval beginning
-  // where the previous one begins always joins it, so the union is the same.
+  // of std::sort's overhead (an interval already after its predecessor is not moved). The order
+  // of equal begins does not matter: an interval beginning where the previous one begins always
+  // joins it, so the union is the same.
   if (intervals_.size() <= 16) {
-    for (std::size_t i = 1; i < intervals_.size(); ++i) {
-      const AngularInterval moved = intervals_[i];
-      std::size_t j = i;
-      for (; j > 0 && byBegin(moved, intervals_[j - 1]); --j) intervals_[j] = intervals_[j - 1];
-      intervals_[j] = moved;
+    for (AngularInterval* i = first + 1; i != last; ++i) {
+      if (!(i->begin < i[-1].begin)) continue;
+      const AngularInterval moved = *i;
+      AngularInterval* j = i;
+      do {
+        *j = j[-1];
+        --j;
+      } while (j != first && moved.begin < j[-1].begin);
+      *j = moved;
     }
   } else {
-    std::sort(intervals_.begin(), intervals_.end(), byBegin);
+    std::sort(first, last,
+              [](const AngularInterval& a, const AngularInterval& b) { return a.begin < b.begin; });
   }
-  std::size_t last = 0;  // the union so far ends with intervals_[last]
-  for (std::size_t i = 1; i < intervals_.size(); ++i) {
-    if (intervals_[i].begin <= intervals_[last].end) {  // overlaps or touches: extend
-      intervals_[last].end = std::max(intervals_[last].end, intervals_[i].end);
+  AngularInterval* end = first;  // the union so far ends with *end
+  for (const AngularInterval* i = first + 1; i != last; ++i) {
+    if (i->begin <= end->end) {  // overlaps or touches: extend
+      end->end = std::max(end->end, i->end);
     } else {
-      intervals_[++last] = intervals_[i];
+      *++end = *i;
     }
   }
-  intervals_.resize(last + 1);
+  intervals_.resize(static_cast<std::size_t>(end - first) + 1);
 }
 
 real AngularCoverage::covered(real begin, real end) const {
