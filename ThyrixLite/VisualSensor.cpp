@@ -142,10 +142,11 @@ void VisualSensor::update(const ObjectList& objects) {
   // view and the edges in registers (a call clobbers every floating-point register). The
   // primitives that may be seen are written to candidates_, sized when the world grows; if a
   // composed body gained parts since, the pass counts them, and runs again once it has room.
-  // In a narrow field (a compile-time variant, not a test per object) a disk is culled by the
-  // two edges alone: those it keeps that diskOutside() would cull lie entirely behind the eye
-  // (dot(view, offset) < -radius), their arcs more than pi / 2 from the view, so more than
-  // 0.05 pi outside the field: clipping empties them, and the pixels are the same.
+  // In a narrow field (a compile-time variant, not a test per object) a circle is culled by
+  // the two edges alone: those it keeps that diskOutside() would cull lie entirely behind the
+  // eye (dot(view, offset) < -radius), their arcs more than pi / 2 from the view, so more than
+  // 0.05 pi outside the field: clipping empties them, and the pixels are the same (but one of
+  // them must not be taken for a disk containing the eye).
   std::size_t count = 0;
   const auto cull = [&](auto narrowField) {
     count = 0;
@@ -166,6 +167,8 @@ void VisualSensor::update(const ObjectList& objects) {
           // Clockwise of the right edge's line or counter-clockwise of the left one's, by more
           // than the radius (cross(offset, rightEdge) is -cross(rightEdge, offset) exactly).
           if (cross(offset, rightEdge) > radius || cross(leftEdge, offset) > radius) continue;
+          // A capsule keeps the general test (pass 2 works from its end disks).
+          if (type != ShapeType::Circle && dot(view, offset) < -radius) continue;
         } else {
           if (diskOutside(offset, radius, view, rightEdge, leftEdge, convexField)) continue;
         }
@@ -178,7 +181,13 @@ void VisualSensor::update(const ObjectList& objects) {
         real distanceSquared = 0;
         if (type == ShapeType::Circle) {
           distanceSquared = offset.lengthSquared();
-          if (distanceSquared <= radius * radius) return false;
+          if (distanceSquared <= radius * radius) {
+            // Rounding can put a disk that touches the eye entirely behind it, where
+            // diskOutside() culls it: so does the narrow variant.
+            if constexpr (decltype(narrowField)::value)
+              if (dot(view, offset) < -radius) continue;
+            return false;
+          }
         }
         if (count < room) out[count] = Candidate{primitive, offset, distanceSquared};
         ++count;
