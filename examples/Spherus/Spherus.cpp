@@ -60,10 +60,16 @@ void Spherus::readSensors(Vector2 f) {
   const Circle* circles[2] = {left_, right_};
   for (int c = 0; c < 2; ++c) {
     real* out = &sensors_[static_cast<std::size_t>(c * sensorsPerCircle)];
+    // Copies of the constructor's counts, known here: a few moves, no memmove call. (The
+    // circles are public: tactile sensors set again to another count copy what fits.)
     const auto touch = circles[c]->tactileActivations();
-    std::copy(touch.begin(), touch.end(), out);
-    const auto seen = eyes_[c].activations();
-    std::copy(seen.begin(), seen.end(), out + contactSensors);
+    if (touch.size() == std::size_t{contactSensors}) {
+      for (int i = 0; i < contactSensors; ++i) out[i] = touch[i];
+    } else {
+      std::copy_n(touch.begin(), std::min(touch.size(), std::size_t{contactSensors}), out);
+    }
+    const real* const seen = eyes_[c].activations().data();  // the eye's own pixel count
+    for (int i = 0; i < pixels; ++i) out[contactSensors + i] = seen[i];
     const real speed = dot(circles[c]->v, f) / fullSpeed;
     out[contactSensors + pixels] = unit(speed);
     out[contactSensors + pixels + 1] = unit(-speed);
