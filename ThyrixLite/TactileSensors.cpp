@@ -102,9 +102,12 @@ Vector2 TactileSensors::cappedRectangleSectorMiddle(int k, real l, real R) const
   return Vector2{-l, 0} + Vector2{std::cos(angle), std::sin(angle)} * R;
 }
 
-void TactileSensors::clear() { std::fill(activations_.begin(), activations_.end(), real(0)); }
+void TactileSensors::clearSums() {
+  std::fill(activations_.begin(), activations_.end(), real(0));
+  touched_ = false;
+}
 
-void TactileSensors::finish() {
+void TactileSensors::finishSums() {
   // A local copy: the stores to the activations cannot change it, so the loop neither reloads
   // it nor stays scalar.
   const real saturation = saturation_;

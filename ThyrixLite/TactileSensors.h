@@ -49,18 +49,32 @@ class TactileSensors {
   [[nodiscard]] Vector2 cappedRectangleSectorMiddle(int k, real l, real R) const;
 
   /// Starts a step: all sums to zero.
-  void clear();
+  void clear() {
+    if (touched_) clearSums();
+  }
   /// Adds a contact force of magnitude @p force to sensor @p sector.
-  void add(int sector, real force) { activations_[static_cast<std::size_t>(sector)] += force; }
+  void add(int sector, real force) {
+    activations_[static_cast<std::size_t>(sector)] += force;
+    touched_ = true;
+  }
   /// Ends a step: sums become activations, `min(1, sum / saturation)`.
-  void finish();
+  void finish() {
+    if (touched_) finishSums();
+  }
 
  private:
+  void clearSums();
+  void finishSums();
+
   std::vector<real> activations_;  // force sums during a step, activations after finish()
   real saturation_ = 1;
   real startAngle_ = 0;
   int perSide_ = 0;
   int perCap_ = 0;
+  // False while every activation is +0 (since the construction or clear()): most sensors are
+  // touched by nothing in most steps, and then clear() and finish() have nothing to change
+  // (min(1, +0 / saturation) is +0).
+  bool touched_ = false;
 };
 
 }  // namespace thyrix
