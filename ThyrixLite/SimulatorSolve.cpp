@@ -31,12 +31,53 @@ void Simulator::solveContacts() {
     return;
   }
 
+  // A row's lever arms and target, one formula for the judgment below and the rows. A circle
+  // on its own turns about its centre, which the normal goes through: its lever arm is exactly
+  // zero (the cross product would give round-off), and its contacts never turn it. Overlap:
+  // separate at a fraction of the depth per step; gap: approach at most by the gap. The gap's
+  // factor 1 changes no bit: one formula for both, its factor looked up, with no branch on the
+  // sign of the depth (in a pile, as often one as the other: a branch was mispredicted half
+  // the time; a conditional factor compiled to a branch too).
+  const auto armA = [this](const GlobalContactInfo& c) {
+    return centredCircle(c.shapeA, c.primitiveA, c.objectA)
+               ? 0
+               : cross(c.point - c.objectA->r, c.normal);
+  };
+  const auto armB = [this](const GlobalContactInfo& c) {
+    return centredCircle(c.shapeB, c.primitiveB, c.objectB)
+               ? 0
+               : cross(c.point - c.objectB->r, c.normal);
+  };
+  const real depthFactor[2] = {1, settings_.penetrationCorrection};  // gap, overlap
+  const auto target = [&depthFactor, dt](const GlobalContactInfo& c) {
+    return depthFactor[c.depth > 0 ? 1 : 0] * c.depth / dt;
+  };
+
+  // In a sparse world most steps need no force at all: every contact (mostly speculative)
+  // holds by itself at the free velocities, so no island needs solving and no velocity
+  // changes. That is judged first, from the contacts and their objects (the velocities the
+  // solver would copy, the same bits), so that such a step builds no row and copies no body (in
+  // a small world, most of the solve); in a pile the first contacts mostly decide it. Only
+  // rows between rigid bodies can be judged so (a multi-body row's velocity is its object's
+  // business).
+  const bool forceFree =
+      !hasMultiBodies_ &&
+      std::all_of(contacts.items_.begin(), contacts.items_.end(), [&](const GlobalContactInfo& c) {
+        const PhysicalObject& a = *c.objectA;
+        const PhysicalObject& b = *c.objectB;
+        const ContactConstraint row{c.bodyA, c.bodyB, c.normal, armA(c), armB(c)};
+        return row.normalVelocity({a.v, a.omega}, {b.v, b.omega}) >= target(c);
+      });
+  if (forceFree) {  // no force: contacts and object contact lists already say 0
+    updateTactileSensors();
+    return;
+  }
+
   // The rows, then their bodies, then the islands. Only the bodies that rows touch take part
   // (the others keep their velocities): a world of many bodies with few contacts pays for its
   // contacts, not for its size. The rows' pass lists each body at its first row without a
   // branch (whether a body is new is unpredictable: a branch on it was mispredicted about once
   // a contact in a pile); the bodies' pass then reads each object once.
-  const real depthFactor[2] = {1, settings_.penetrationCorrection};  // gap, overlap
   const std::size_t contactCount = contacts.size();
   const std::size_t rowCount = contactCount + internal_.size();
   rows_.resize(rowCount);
@@ -74,20 +115,9 @@ void Simulator::solveContacts() {
     row.a = c.bodyA;
     row.b = c.bodyB;
     row.normal = c.normal;
-    // A circle on its own turns about its centre, which the normal goes through: its lever
-    // arm is exactly zero (the cross product would give round-off), and its contacts never
-    // turn it.
-    row.armA = centredCircle(c.shapeA, c.primitiveA, c.objectA)
-                   ? 0
-                   : cross(c.point - c.objectA->r, c.normal);
-    row.armB = centredCircle(c.shapeB, c.primitiveB, c.objectB)
-                   ? 0
-                   : cross(c.point - c.objectB->r, c.normal);
-    // Overlap: separate at a fraction of the depth per step; gap: approach at most by the gap.
-    // The gap's factor 1 changes no bit: one formula for both, its factor looked up, with no
-    // branch on the sign of the depth (in a pile, as often one as the other: a branch was
-    // mispredicted half the time; a conditional factor compiled to a branch too).
-    row.target = depthFactor[c.depth > 0 ? 1 : 0] * c.depth / dt;
+    row.armA = armA(c);
+    row.armB = armB(c);
+    row.target = target(c);
     row.force = 0;
     row.order = dot(c.point, up);
     if (warmStart) {
@@ -128,20 +158,6 @@ void Simulator::solveContacts() {
     touched[movedCount] = i;
     movedCount += !multiBody && !object.fixed ? 1 : 0;
     islands.addBody(i);
-  }
-
-  // In a sparse world most steps need no force at all: every contact (mostly speculative)
-  // holds by itself at the free velocities, so no island needs solving and no velocity
-  // changes. Only rows between rigid bodies can be judged so (a multi-body row's velocity is
-  // its object's business); their bodies' velocities are their objects'.
-  const bool forceFree =
-      !hasMultiBodies_ &&
-      std::all_of(rows_.begin(), rows_.end(), [this](const ContactConstraint& row) {
-        return row.normalVelocity(bodies_[row.a], bodies_[row.b]) >= row.target;
-      });
-  if (forceFree) {  // no force: contacts and object contact lists already say 0
-    updateTactileSensors();
-    return;
   }
 
   // The islands, linked through plain pointers (the byte stores of movable would make the
