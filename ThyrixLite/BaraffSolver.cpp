@@ -9,6 +9,89 @@ namespace {
 /// Tolerance, relative to the scale of A, below which a rate counts as zero.
 constexpr real relativeTolerance = std::is_same_v<real, float> ? real(1e-5) : real(1e-11);
 
+/// BaraffSolver::solve() for an island of the one row @p row, @p pivots its pivot count.
+bool solveOne(ContactConstraint& row, std::span<SolverBody> bodies, int& pivots) {
+  // pivot() on a 1 x 1 matrix, step by step (the same operations, the same bits): contact 0
+  // needs no force if its slack is not negative; else it is driven, if its rate is above the
+  // tolerance, by the step that closes its slack, and clamped (the factor's check passes
+  // whenever the rate's did). Most islands of a small world are one contact.
+  SolverBody& bodyA = bodies[row.a];
+  SolverBody& bodyB = bodies[row.b];
+  const real a = rigidCoupling(row, row, bodies);
+  const real rateTolerance = relativeTolerance * std::max(real(0), a);
+  const real slack = row.normalVelocity(bodyA, bodyB) - row.target;
+  real force = 0;
+  pivots = 0;
+  if (!(slack >= 0)) {
+    pivots = 1;
+    if (!(a > rateTolerance)) return false;  // nothing bounds the step
+    force += -slack / a;                     // force_ += step * direction_, direction_ being 1
+  }
+  row.force = std::max(real(0), force);
+  row.applyImpulse(row.force, bodyA, bodyB);
+  return true;
+}
+
+/// BaraffSolver::solve() for an island of the two rows @p row0 and @p row1 when pivot() would
+/// take one of its usual paths (each row driven at most once, and clamped): its operations
+/// in closed form, the same bits, @p pivots its pivot count. False, with nothing written,
+/// for any other path (a row that blocks the other, a release, a failure): solve() then runs
+/// pivot() itself. Most islands of a small world that are not one contact are two.
+bool solveTwo(ContactConstraint& row0, ContactConstraint& row1, std::span<SolverBody> bodies,
+              int& pivots) {
+  // buildMatrix(): A (symmetric), its scale; then the slacks.
+  const real a00 = rigidCoupling(row0, row0, bodies);
+  const real a01 = rigidCoupling(row0, row1, bodies);
+  const real a11 = rigidCoupling(row1, row1, bodies);
+  const real rateTolerance = relativeTolerance * std::max(std::max(real(0), a00), a11);
+  real s0 = row0.normalVelocity(bodies[row0.a], bodies[row0.b]) - row0.target;
+  real s1 = row1.normalVelocity(bodies[row1.a], bodies[row1.b]) - row1.target;
+  real f0 = 0;
+  real f1 = 0;
+  pivots = 0;
+  const bool clamped0 = !(s0 >= 0);
+  real l00 = 0;  // the factor's first entry, once row 0 is clamped
+  if (clamped0) {
+    // Row 0 driven alone: direction (1, 0), rates (a00, a01); it blocks itself and is clamped.
+    pivots = 1;
+    if (!(a00 > rateTolerance)) return false;
+    const real step = -s0 / a00;
+    f0 += step * real(1);
+    f1 += step * real(0);
+    s1 += step * a01;
+    l00 = std::sqrt(a00);
+  }
+  if (!(s1 >= 0)) {
+    ++pivots;
+    if (clamped0) {
+      // Row 1 driven with row 0 clamped: direction (x, 1), x from the factor; row 1 must block
+      // first (row 0's force reaching zero is a release), and be clamped.
+      const real x = (-a01 / l00) / l00;
+      const real rate1 = a11 + a01 * x;
+      if (!(rate1 > rateTolerance)) return false;
+      const real step = -s1 / rate1;
+      if (x < -relativeTolerance && std::max(real(0), -f0 / x) < step) return false;
+      const real l10 = a01 / l00;
+      if (a11 - l10 * l10 <= rateTolerance) return false;
+      f0 += step * x;
+      f1 += step * real(1);
+    } else {
+      // Row 1 driven alone (row 0 holds): direction (0, 1), rates (a01, a11); row 0 must not
+      // start to approach first.
+      if (!(a11 > rateTolerance)) return false;
+      const real step = -s1 / a11;
+      if (a01 < -rateTolerance && std::max(real(0), -s0 / a01) < step) return false;
+      f0 += step * real(0);
+      f1 += step * real(1);
+    }
+  }
+  row0.force = std::max(real(0), f0);
+  row0.applyImpulse(row0.force, bodies[row0.a], bodies[row0.b]);
+  row1.force = std::max(real(0), f1);
+  row1.applyImpulse(row1.force, bodies[row1.a], bodies[row1.b]);
+  return true;
+}
+
 }  // namespace
 
 void BaraffSolver::buildMatrix(std::span<const std::uint32_t> island,
@@ -112,6 +195,8 @@ void BaraffSolver::computeDirection(std::size_t d) {
 bool BaraffSolver::solve(std::span<const std::uint32_t> island, std::span<ContactConstraint> rows,
                          std::span<SolverBody> bodies) {
   const std::size_t n = island.size();
+  if (n == 1) return solveOne(rows[island[0]], bodies, pivots_);
+  if (n == 2 && solveTwo(rows[island[0]], rows[island[1]], bodies, pivots_)) return true;
   size_ = n;
   buildMatrix(island, rows, bodies);
   slack_.resize(n);
