@@ -209,6 +209,13 @@ class PhysicalObject : public GraphicalObject {
       omega = 0;
       return;
     }
+    velocitiesFromPushes<InField>(gravity);
+  }
+  /// velocitiesFromAccumulators() for a pushed body, out of line: the simulator's loop over the
+  /// bodies, mostly unpushed, then keeps to the few instructions of the test (inline, the
+  /// divisions' loads merged with the test's, which then went through the stack).
+  template <bool InField>
+  [[gnu::noinline]] void velocitiesFromPushes([[maybe_unused]] Vector2 gravity) {
     if (fixed) {
       v = {};
       omega = 0;

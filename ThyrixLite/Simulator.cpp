@@ -182,8 +182,7 @@ void Simulator::computeDerivativesInGravity() {
   // call each, just before their own hook, since only they know where their mass is (an
   // articulated agent's links; an elastoid has none, its bodies are objects of their own).
   const Vector2 gravity = gravity_;
-  forEachInRuns(
-      objects, customObjects_,
+  forEachObjectInRuns(
       [gravity](PhysicalObject& object) { object.computeDerivativesInField(gravity); },
       [gravity](PhysicalObject& object) {
         object.applyWeight(gravity);

@@ -85,8 +85,7 @@ class Simulator : public World {
       computeDerivativesInGravity();
       return;
     }
-    forEachInRuns(
-        objects, customObjects_,
+    forEachObjectInRuns(
         [](PhysicalObject& object) { object.PhysicalObject::computeDerivativesWithoutContacts(); },
         [](PhysicalObject& object) { object.computeDerivativesWithoutContacts(); });
   }
@@ -217,6 +216,21 @@ class Simulator : public World {
 
   /// computeDerivativesWithoutContacts() with a gravity field that is not zero.
   void computeDerivativesInGravity();
+  /// forEachInRuns() over the objects, customObjects_ listed, by iterator: the last run's end
+  /// is read once (by index, a core shape's call out of line, for a pushed body, made every
+  /// object after it recompute the count).
+  template <class Core, class Other>
+  void forEachObjectInRuns(Core&& core, Other&& other) {
+    auto object = objects.begin();
+    std::size_t index = 0;
+    for (const std::uint32_t listed : customObjects_) {
+      for (; index < listed; ++index, ++object) core(*object);
+      other(*object);
+      ++index;
+      ++object;
+    }
+    for (const auto end = objects.end(); object != end; ++object) core(*object);
+  }
   void updateGeometry();
   /// updateGeometry for a body that changed (its collision filters with @p newFilters), or
   /// that has several shapes (whose poses are then compared one by one).
