@@ -29,30 +29,36 @@ void Islands::finish() {
   // Both passes keep the count or cursor of the island of the last row in a register: rows
   // mostly follow rows of the same island (a pile is one), and an increment in memory at each
   // row made each row wait for the last one's store.
+  // The starts are sized for one island per row, the most there can be, and only grow: a new
+  // island then costs a store, not a push_back (in a small world most rows are islands of
+  // their own); count() is kept apart.
   const std::size_t rowCount = islandOfRow_.size();
+  if (islandStart_.size() < rowCount + 2) islandStart_.resize(rowCount + 2);
+  std::uint32_t* const start = islandStart_.data();
+  std::uint32_t* const parent = parent_.data();
   std::uint32_t* const islandOfRow = islandOfRow_.data();
   std::uint32_t* const islandOfBody = islandOfBody_.data();
-  islandStart_.assign(2, 0);
+  start[0] = start[1] = 0;
   std::uint32_t islandCount = 0;
   std::uint32_t current = 0;  // the island whose count is in `run` (its entry is stale)
   std::uint32_t run = 0;
   for (std::size_t k = 0; k < rowCount; ++k) {
-    const std::uint32_t root = find(parent_.data(), islandOfRow[k]);
+    const std::uint32_t root = find(parent, islandOfRow[k]);
     if (islandOfBody[root] == none) {
-      islandOfBody[root] = islandCount++;
-      islandStart_.push_back(0);
+      islandOfBody[root] = islandCount;
+      start[islandCount + 2] = 0;
+      ++islandCount;
     }
     const std::uint32_t island = islandOfBody[root];
     islandOfRow[k] = island;
     if (island != current) {
-      islandStart_[current + 2] = run;
+      start[current + 2] = run;
       current = island;
-      run = islandStart_[island + 2];
+      run = start[island + 2];
     }
     ++run;
   }
-  if (rowCount != 0) islandStart_[current + 2] = run;
-  std::uint32_t* const start = islandStart_.data();
+  if (rowCount != 0) start[current + 2] = run;
   for (std::uint32_t i = 0; i < islandCount; ++i) start[i + 2] += start[i + 1];
   contacts_.resize(rowCount);
   std::uint32_t* const contacts = contacts_.data();
@@ -68,7 +74,7 @@ void Islands::finish() {
     contacts[cursor++] = static_cast<std::uint32_t>(k);
   }
   if (rowCount != 0) start[current + 1] = cursor;
-  islandStart_.pop_back();  // the entry one late: islandCount + 1 starts remain
+  islandCount_ = islandCount;  // (the entry one late is not one of the islandCount + 1 starts)
 }
 
 }  // namespace thyrix

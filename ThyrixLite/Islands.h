@@ -90,9 +90,7 @@ class Islands {
   /// Makes room for @p bodies bodies and @p rows contacts without further allocation.
   void reserve(std::size_t bodies, std::size_t rows);
   /// Number of islands found by the last finish().
-  [[nodiscard]] std::size_t count() const {
-    return islandStart_.empty() ? 0 : islandStart_.size() - 1;
-  }
+  [[nodiscard]] std::size_t count() const { return islandCount_; }
   /// The contact indices of island @p i.
   [[nodiscard]] std::span<const std::uint32_t> island(std::size_t i) const {
     return std::span(contacts_).subspan(islandStart_[i], islandStart_[i + 1] - islandStart_[i]);
@@ -112,7 +110,8 @@ class Islands {
   std::vector<std::uint8_t> rank_;           // of each root: at most log2 of its set's size
   std::vector<std::uint32_t> islandOfBody_;  // dense island number of each root, or none
   std::vector<std::uint32_t> islandOfRow_;   // a body of each row, then its island
-  std::vector<std::uint32_t> islandStart_;
+  std::vector<std::uint32_t> islandStart_;   // where each island starts in contacts_, and the end
+  std::size_t islandCount_ = 0;
   std::vector<std::uint32_t> contacts_;
 };
 
