@@ -365,6 +365,7 @@ class Simulator : public World {
   [[nodiscard]] real searchPreviousForce(const GlobalContactInfo& contact, std::size_t position,
                                          std::size_t& hint);
   void clearContactLists();
+  /// Solves @p island, a rigid island one of whose contacts does not hold without force.
   void solveIsland(std::span<const std::uint32_t> island);
   void solveGeneralIsland(std::span<const std::uint32_t> island);
   /// Shape @p shape is a circle that is its own body (not a part of a composed body): its

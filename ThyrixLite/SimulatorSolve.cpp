@@ -175,10 +175,21 @@ void Simulator::solveContacts() {
         hasMultiBodies_ && std::any_of(island.begin(), island.end(), [this](std::uint32_t k) {
           return multiBodies_[rows_[k].a] != nullptr || multiBodies_[rows_[k].b] != nullptr;
         });
-    if (general)
+    if (general) {
       solveGeneralIsland(island);
-    else
-      solveIsland(island);
+      continue;
+    }
+    // An island whose contacts all hold without force needs no solve: its bodies keep u0.
+    // (Tested here, not in a call: most islands of a small world are such.)
+    const bool satisfied =
+        std::all_of(island.begin(), island.end(), [rows, bodies](std::uint32_t k) {
+          return rows[k].normalVelocity(bodies[rows[k].a], bodies[rows[k].b]) >= rows[k].target;
+        });
+    if (satisfied) {
+      for (const std::uint32_t k : island) rows[k].force = 0;  // (the warm start's, unused)
+      continue;
+    }
+    solveIsland(island);
   }
   for (std::size_t t = 0; t < movedCount; ++t) {
     const std::uint32_t i = touched[t];
@@ -297,15 +308,6 @@ void Simulator::updateTactileSensors() {
 }
 
 void Simulator::solveIsland(std::span<const std::uint32_t> island) {
-  // An island whose contacts all hold without force needs no solve: its bodies keep u0.
-  const bool satisfied = std::all_of(island.begin(), island.end(), [this](std::uint32_t k) {
-    const ContactConstraint& row = rows_[k];
-    return row.normalVelocity(bodies_[row.a], bodies_[row.b]) >= row.target;
-  });
-  if (satisfied) {
-    for (const std::uint32_t k : island) rows_[k].force = 0;  // (the warm start's, unused)
-    return;
-  }
   ++statistics_.solvedIslands;
   if (solverKind_ == ContactSolverKind::Baraff &&
       island.size() <= static_cast<std::size_t>(settings_.baraffMaxContacts)) {
