@@ -202,7 +202,13 @@ class Simulator : public World {
     bool movable = false;
     bool standalone = false;        // the body is its one primitive
     bool standaloneCircle = false;  // ... and that is a circle
-    bool restsCheaply = false;      // standalone, or no shape: at rest, only its sensors to note
+    // Standalone, or no shape: at rest, only its sensors to note. As registered: then kept by
+    // updateGeometry in filterKey, as a byte that is 1 while the body travels.
+    bool restsCheaply = false;
+    // `fixed`, no sensing_, whether it travels and `group` laid out as the body's bytes from its
+    // `fixed` on (see updateGeometry): its filters, sensors and rest checked in one word. (All
+    // ones before the first detection: never matches.)
+    std::uint64_t filterKey = ~std::uint64_t{0};
   };
   /// The pose of a primitive its geometry was computed from (not kept for a standalone
   /// circle, whose body's pose says it), its capsule half axis, and its half length (fixed at
@@ -243,6 +249,8 @@ class Simulator : public World {
   void addCachedBox(std::uint32_t shape, Vector2& boxMin, Vector2& boxMax) const;
   /// Whether @p object has tactile sensors or is rigidly attached (sensing_ || rigid_).
   static bool sensingOrRigid(const PhysicalObject& object);
+  /// The 8 bytes of @p object from its `fixed` on as one word (BodyState::filterKey's layout).
+  static std::uint64_t filterBytes(const PhysicalObject& object);
   /// addCachedBox for a circle or capsule of geometry @p geometry.
   static void addGeometryBox(const ShapeGeometry& geometry, Vector2& boxMin, Vector2& boxMax);
   void updateShape(std::uint32_t shape, bool poseKnown, bool standalone, Vector2& boxMin,

@@ -6,6 +6,7 @@
 #include <Tools/ProcessorFeatures.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstddef>
@@ -174,7 +175,56 @@ inline void capsuleGeometry(Vector2 r, Vector2 axis, Vector2& p0, Vector2& p1, R
   gridBox = {least - reach, most + reach};
 }
 
+/// A word of 8 bytes, byte @p i @p value, the others 0 (by bytes: the same in either byte order).
+constexpr std::uint64_t byteWord(std::size_t i, unsigned char value) {
+  std::array<unsigned char, 8> bytes{};
+  bytes[i] = value;
+  return std::bit_cast<std::uint64_t>(bytes);
+}
+
+// A body's bytes from its `fixed` on (Simulator::filterBytes), compared with its
+// BodyState::filterKey at every step: 0 `fixed`, 1 sensing_, 2 rigid_, 3 padding, 4 to 7
+// collisionGroup. The key has sensing_ false (a body with sensors differs, and is noted in the
+// rare branch), and in the byte of rigid_, which the body's bytes drop with the padding, 1 if
+// the body travels, that is, does not rest cheaply (it then always differs).
+constexpr std::uint64_t groupBytes =
+    byteWord(4, 0xff) | byteWord(5, 0xff) | byteWord(6, 0xff) | byteWord(7, 0xff);
+constexpr std::uint64_t filterMask = byteWord(0, 0xff) | groupBytes;  // fixed, collisionGroup
+constexpr std::uint64_t comparedMask = filterMask | byteWord(1, 0xff);
+constexpr std::size_t travellingByte = 2;
+constexpr std::uint64_t travellingBit = byteWord(travellingByte, 1);
+
+/// The BodyState::filterKey of a body of filters @p fixed and @p group.
+std::uint64_t filterKeyOf(std::uint32_t fixed, std::uint32_t group, bool travelling) {
+  std::array<unsigned char, 8> bytes{};
+  bytes[0] = static_cast<unsigned char>(fixed);
+  bytes[travellingByte] = travelling ? 1 : 0;
+  static_assert(sizeof group == 4, "the group is bytes 4 to 7");
+  std::memcpy(bytes.data() + 4, &group, sizeof group);
+  return std::bit_cast<std::uint64_t>(bytes);
+}
+
+/// Notes in @p key (a BodyState::filterKey) whether its body travels: one byte stored.
+void setTravelling(std::uint64_t& key, bool travelling) {
+  reinterpret_cast<unsigned char*>(&key)[travellingByte] = travelling ? 1 : 0;
+}
+
 }  // namespace
+
+inline std::uint64_t Simulator::filterBytes(const PhysicalObject& object) {
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Winvalid-offsetof"
+  constexpr std::size_t fixed = offsetof(PhysicalObject, fixed);
+  static_assert(offsetof(PhysicalObject, sensing_) == fixed + 1 &&
+                    offsetof(PhysicalObject, rigid_) == fixed + 2 &&
+                    offsetof(PhysicalObject, collisionGroup) == fixed + 4 && sizeof(bool) == 1 &&
+                    sizeof(object.collisionGroup) == 4,
+                "a body's filters and flags are read as one word");
+#pragma GCC diagnostic pop
+  std::uint64_t bytes = 0;
+  std::memcpy(&bytes, reinterpret_cast<const unsigned char*>(&object) + fixed, sizeof bytes);
+  return bytes;
+}
 
 // Its two adjacent flags read as one 16-bit word: a test and a branch less for each of a
 // chain's links (offsetof: conditionally supported on a class with virtual functions, as in
@@ -332,6 +382,11 @@ THYRIX_ALWAYS_INLINE void Simulator::updateBody(std::uint32_t index, bool change
         shapes_[s].group = state.group;  // next to the shapes for the narrow phase
         shapes_[s].movable = state.movable;
       }
+      // (Whether it travels as the key says, or before its first detection as registered.)
+      const bool travelling = state.filterKey == ~std::uint64_t{0}
+                                  ? !state.restsCheaply
+                                  : (state.filterKey & travellingBit) != 0;
+      state.filterKey = filterKeyOf(state.fixed, state.group, travelling);
     }
   }
   if (state.standalone) {  // a primitive of its own: its pose is the body's (common case)
@@ -356,7 +411,7 @@ THYRIX_ALWAYS_INLINE void Simulator::updateBody(std::uint32_t index, bool change
     body.boxMin = boxMin;
     body.boxMax = boxMax;
     // While it travels, the body is looked at in this loop even when its pose stays the same.
-    state.restsCheaply = travel == 0;
+    setTravelling(state.filterKey, travel != 0);
     return;
   }
   updateComposedBody(state, changed, known);
@@ -367,7 +422,7 @@ THYRIX_ALWAYS_INLINE void Simulator::updateBody(std::uint32_t index, bool change
 // whose objects are then at hand (the second loop read each body again).
 THYRIX_ALWAYS_INLINE void Simulator::updateMovedCircle(BodyState& state, bool changed) {
   // updateBody's path for a standalone circle, known (its filters are unchanged: `fixed` is
-  // known) and travelling if unchanged (restsCheaply is false): the same operations.
+  // known) and travelling if unchanged (its key says so): the same operations.
   PhysicalObject& body = *state.object;
   auto& primitive = static_cast<Primitive&>(body);
   if (changed) {
@@ -382,7 +437,7 @@ THYRIX_ALWAYS_INLINE void Simulator::updateMovedCircle(BodyState& state, bool ch
   const real travel = updateCircle(s, primitive.r, true, boxMin, boxMax);
   body.boxMin = boxMin;
   body.boxMax = boxMax;
-  state.restsCheaply = travel == 0;
+  setTravelling(state.filterKey, travel != 0);
 }
 
 // Out of line (the general case of updateComposedBody's second loop): its calls (a sensor
@@ -565,43 +620,50 @@ void Simulator::updateGeometry() {
   // Every shape unmoved to begin with: a body at rest then writes nothing.
   std::fill(shapeMoved_.begin(), shapeMoved_.end(), std::uint8_t{0});
   const std::span<BodyState> states(bodyStates_);
-  // All ones when everything is recomputed: every body then differs.
-  const std::uint64_t forced = everything ? ~std::uint64_t{0} : 0;
   // Bodies for the second loop, each as 4 index + 2 if its filters changed + 1 if it changed
   // (else its several shapes are compared).
   pendingBodies_.resize(states.size());
   std::uint32_t* const pending = pendingBodies_.data();
   std::uint32_t pendingCount = 0;
-  std::uint32_t index = 0;  // of state (counted, not computed from the address: a division)
-  for (BodyState& state : states) {
-    ++index;
-    PhysicalObject& body = *state.object;
-    // A body is unchanged if its pose and its collision filters are: its rigid parts are then
-    // where they were (followOwner would put them there again), unless moved by hand, which
-    // the parts' own poses show; so do parts placed by their owner (articulated links). Every
-    // field is compared at once, by its bits (`fixed` never matches before the first detection).
-    const std::uint32_t filters =
-        (body.collisionGroup ^ state.group) | (std::uint32_t{body.fixed} ^ state.fixed);
-    const std::uint64_t difference = (bitsOf(body.r.x) ^ bitsOf(state.r.x)) |
-                                     (bitsOf(body.r.y) ^ bitsOf(state.r.y)) |
-                                     (bitsOf(body.alpha) ^ bitsOf(state.alpha)) | filters | forced;
-    if (difference != 0 || !state.restsCheaply) {  // for the second loop
-      // (But a crowd's body in motion, updated while its object is at hand.)
-      if (state.standaloneCircle && filters == 0) {
-        updateMovedCircle(state, difference != 0);
+  // In two copies: with everything recomputed (every body then differs), and without.
+  const auto check = [&](auto everythingConstant) THYRIX_LAMBDA_ALWAYS_INLINE {
+    for (BodyState& state : states) {
+      PhysicalObject& body = *state.object;
+      // A body is unchanged if its pose and its collision filters are: its rigid parts are
+      // then where they were (followOwner would put them there again), unless moved by hand,
+      // which the parts' own poses show; so do parts placed by their owner (articulated links).
+      // Every field is compared at once, by its bits (`fixed` never matches before the first
+      // detection), the filters with the sensors in one word (see filterKey).
+      const std::uint64_t pose = decltype(everythingConstant)::value
+                                     ? ~std::uint64_t{0}
+                                     : (bitsOf(body.r.x) ^ bitsOf(state.r.x)) |
+                                           (bitsOf(body.r.y) ^ bitsOf(state.r.y)) |
+                                           (bitsOf(body.alpha) ^ bitsOf(state.alpha));
+      const std::uint64_t flags = (filterBytes(body) & comparedMask) ^ state.filterKey;
+      if ((pose | flags) == 0) [[likely]]  // at rest, without sensors, not travelling
+        continue;
+      const std::uint64_t filters = flags & filterMask;
+      const bool changed = (pose | filters) != 0;
+      if (changed || (flags & travellingBit) != 0) {  // for the second loop
+        // (But a crowd's body in motion, updated while its object is at hand.)
+        if (state.standaloneCircle && filters == 0) {
+          updateMovedCircle(state, changed);
+          continue;
+        }
+        // (Its index from its address here only, off the common path: a division.)
+        const auto index = static_cast<std::uint32_t>(&state - states.data());
+        pending[pendingCount++] = 4 * index + (filters != 0 ? 2 : 0) + (changed ? 1 : 0);
         continue;
       }
-      pending[pendingCount++] =
-          4 * (index - 1) + (filters != 0 ? 2 : 0) + (difference != 0 ? 1 : 0);
-      continue;
+      // At rest, with sensors: a primitive of its own (or a shapeless body) has nothing else
+      // to do but note them (in any order: each sensing primitive is reset and read alone).
+      if (state.standalone) sensingPrimitives_.push_back(&static_cast<Primitive&>(body));
     }
-    // The common case, a primitive of its own (or a shapeless body) at rest: nothing to do
-    // but note its sensors (in any order: each sensing primitive is reset and read alone).
-    if (state.standalone) {
-      auto& primitive = static_cast<Primitive&>(body);
-      if (primitive.sensing_) sensingPrimitives_.push_back(&primitive);
-    }
-  }
+  };
+  if (everything)
+    check(std::true_type{});
+  else
+    check(std::false_type{});
   // The bodies that changed, or whose several shapes are compared one by one, in their own
   // loop: the one above, run for every body at every step, then keeps everything in
   // registers (measured: one loop spilled and took 45 instructions a body at rest, not 29).
