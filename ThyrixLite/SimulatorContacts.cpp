@@ -164,6 +164,9 @@ struct BorderLine {
   Vector2 absNormal;  // |normal.x|, |normal.y|
 };
 
+static_assert(std::is_standard_layout_v<BorderLine> && sizeof(BorderLine) == 6 * sizeof(real),
+              "a line is read as an array of six coordinates");
+
 /// The line of a border through @p point with unit @p normal.
 BorderLine borderLine(Vector2 point, Vector2 normal) {
   return {point, normal, {std::abs(normal.x), std::abs(normal.y)}};
@@ -219,6 +222,59 @@ void reachFullWord(const BorderLine* lines, const BoundingBox* boxes, std::uint6
   }
   for (std::size_t k = 0; k < Borders; ++k) reach[k] |= bits[k];
 }
+
+/// reachesBehind for the boxes of @p retest (from @p boxes), two borders at a time (one border
+/// per half of a register: the same operations in the same order, so the same bits), each box
+/// read once for all of them and its bit set without a branch, ORed into @p reach.
+template <std::size_t Borders>
+void reachMovedBoxes(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t retest,
+                     std::uint64_t* reach) {
+  constexpr std::size_t pairs = (Borders + 1) / 2;
+  // The lines by coordinate, borders 2p and 2p + 1 in pair p (an odd count: the last twice).
+  __m128d pointX[pairs], pointY[pairs], normalX[pairs], normalY[pairs], absX[pairs], absY[pairs];
+  __m128i bits[pairs];
+  for (std::size_t p = 0; p < pairs; ++p) {
+    // (point x, y, normal x, y, |normal| x, y)
+    const auto* const a = reinterpret_cast<const double*>(lines + 2 * p);
+    const auto* const b = reinterpret_cast<const double*>(lines + std::min(2 * p + 1, Borders - 1));
+    const __m128d pointA = _mm_loadu_pd(a), pointB = _mm_loadu_pd(b);
+    const __m128d normalA = _mm_loadu_pd(a + 2), normalB = _mm_loadu_pd(b + 2);
+    const __m128d absA = _mm_loadu_pd(a + 4), absB = _mm_loadu_pd(b + 4);
+    pointX[p] = _mm_unpacklo_pd(pointA, pointB);
+    pointY[p] = _mm_unpackhi_pd(pointA, pointB);
+    normalX[p] = _mm_unpacklo_pd(normalA, normalB);
+    normalY[p] = _mm_unpackhi_pd(normalA, normalB);
+    absX[p] = _mm_unpacklo_pd(absA, absB);
+    absY[p] = _mm_unpackhi_pd(absA, absB);
+    bits[p] = _mm_setzero_si128();
+  }
+  const auto* const corners = reinterpret_cast<const double*>(boxes);  // lower x, y, upper x, y
+  const __m128d half = _mm_set1_pd(0.5);
+  const __m128d zero = _mm_setzero_pd();
+  for (std::uint64_t rest = retest; rest != 0; rest &= rest - 1) {
+    const double* const box = corners + 4 * static_cast<std::size_t>(std::countr_zero(rest));
+    const __m128d lower = _mm_loadu_pd(box);
+    const __m128d upper = _mm_loadu_pd(box + 2);
+    const __m128d centre = _mm_mul_pd(_mm_add_pd(lower, upper), half);
+    const __m128d extents = _mm_mul_pd(_mm_sub_pd(upper, lower), half);
+    const __m128d centreX = _mm_unpacklo_pd(centre, centre);
+    const __m128d centreY = _mm_unpackhi_pd(centre, centre);
+    const __m128d halfX = _mm_unpacklo_pd(extents, extents);
+    const __m128d halfY = _mm_unpackhi_pd(extents, extents);
+    const __m128i bit = _mm_set1_epi64x(static_cast<long long>(rest & (~rest + 1)));
+    for (std::size_t p = 0; p < pairs; ++p) {
+      const __m128d along = _mm_add_pd(_mm_mul_pd(_mm_sub_pd(centreX, pointX[p]), normalX[p]),
+                                       _mm_mul_pd(_mm_sub_pd(centreY, pointY[p]), normalY[p]));
+      const __m128d extent = _mm_add_pd(_mm_mul_pd(absX[p], halfX), _mm_mul_pd(absY[p], halfY));
+      const __m128d hit = _mm_cmple_pd(_mm_sub_pd(along, extent), zero);
+      bits[p] = _mm_or_si128(bits[p], _mm_and_si128(_mm_castpd_si128(hit), bit));
+    }
+  }
+  std::uint64_t found[2 * pairs];
+  for (std::size_t p = 0; p < pairs; ++p)
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(found + 2 * p), bits[p]);
+  for (std::size_t k = 0; k < Borders; ++k) reach[k] |= found[k];
+}
 #endif
 
 /// Sets in @p reach (one word per border of @p lines) the bits of @p retest whose boxes (from
@@ -245,6 +301,12 @@ void reachWord(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t 
     for (std::size_t j = 0; j < 64; ++j) test(j, std::uint64_t{1} << j);
     return;
   }
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<real, double> && Borders > 1) {
+    reachMovedBoxes<Borders>(lines, boxes, retest, reach);
+    return;
+  }
+#endif
   for (std::uint64_t bits = retest; bits != 0; bits &= bits - 1)
     test(static_cast<std::size_t>(std::countr_zero(bits)), bits & (~bits + 1));
 }
@@ -260,7 +322,7 @@ void Simulator::findBorderContacts(bool reuse) {
   const bool remembered = restSkipping && reachShapes_ == count;
   reachShapes_ = count;
   borderReach_.resize(borderShapes_.size() * words);
-  if (!(remembered && words > 1 && findBorderReachTogether(words))) {
+  if (!(remembered && findBorderReachTogether(words))) {
     for (std::size_t k = 0; k < borderShapes_.size(); ++k)
       findBorderReach(k, words, !remembered || shapeMoved_[borderShapes_[k]] != 0);
   }
