@@ -98,7 +98,7 @@ class BroadPhase {
   void sortByCell(std::uint32_t count, std::uint32_t cellCount);
   void reserveFor(std::uint32_t count);
 
-  // Few boxes: the corners by coordinate, smallCount + 3 of each (padding for whole vectors)
+  // Few boxes: the corners by coordinate, smallCount + 7 of each (padding for whole vectors)
   // in columns_: lower x, upper x, lower y, upper y.
   std::vector<real> columns_;
   // Few boxes: bit j of overlaps_[i] is set when boxes i < j overlap (last call's result);
