@@ -3,6 +3,7 @@
 /// geometry is in SimulatorGeometry.cpp).
 #include <ThyrixLite/NarrowPhase.h>
 #include <ThyrixLite/Simulator.h>
+#include <Tools/ProcessorFeatures.h>
 
 #include <algorithm>
 #include <bit>
@@ -10,6 +11,9 @@
 #include <type_traits>
 #if defined(__SSE2__)
 #include <emmintrin.h>
+#endif
+#if defined(THYRIX_AVX_DISPATCH)
+#include <immintrin.h>
 #endif
 
 namespace thyrix {
@@ -277,6 +281,66 @@ void reachMovedBoxes(const BorderLine* lines, const BoundingBox* boxes, std::uin
 }
 #endif
 
+#if defined(THYRIX_AVX_DISPATCH)
+/// findBorderReachTogether with AVX2: the borders (up to fusedBorders) in one register, one per
+/// lane (the same operations in the same order as reachesBehind: the same bits), each moved box
+/// read once for all of them and its bit set without a branch. @p lines: each border's point
+/// and unit normal (x, y, x, y), fusedBorders of them (the last border repeated); @p reach:
+/// @p words words a border.
+template <class Real>
+[[gnu::target("avx2")]] void reachTogetherAvx2(const Real* const* lines, std::size_t borders,
+                                               const std::uint64_t* movedBits,
+                                               const BoundingBox* boxes, std::uint64_t* reach,
+                                               std::size_t words) {
+  static_assert(fusedBorders == 4, "a border per lane");
+  const auto lane = [lines](std::size_t i) __attribute__((target("avx2"))) {
+    return _mm256_set_pd(lines[3][i], lines[2][i], lines[1][i], lines[0][i]);
+  };
+  const __m256d pointX = lane(0), pointY = lane(1), normalX = lane(2), normalY = lane(3);
+  const __m256d noSign = _mm256_castsi256_pd(_mm256_set1_epi64x(0x7fffffffffffffff));
+  const __m256d absX = _mm256_and_pd(normalX, noSign), absY = _mm256_and_pd(normalY, noSign);
+  const __m256d half = _mm256_set1_pd(0.5);
+  const __m256d zero = _mm256_setzero_pd();
+  for (std::size_t w = 0; w < words; ++w) {
+    const std::uint64_t retest = movedBits[w];
+    if (retest == 0) continue;
+    const auto* const corners = reinterpret_cast<const Real*>(boxes + 64 * w);
+    __m256i bits = _mm256_setzero_si256();
+    const auto test = [&](std::size_t j, __m256i bit) __attribute__((target("avx2"))) {
+      const Real* const box = corners + 4 * j;  // lower x, y, upper x, y
+      const __m256d lowerX = _mm256_broadcast_sd(box), lowerY = _mm256_broadcast_sd(box + 1);
+      const __m256d upperX = _mm256_broadcast_sd(box + 2), upperY = _mm256_broadcast_sd(box + 3);
+      const __m256d centreX = _mm256_mul_pd(_mm256_add_pd(lowerX, upperX), half);
+      const __m256d centreY = _mm256_mul_pd(_mm256_add_pd(lowerY, upperY), half);
+      const __m256d halfX = _mm256_mul_pd(_mm256_sub_pd(upperX, lowerX), half);
+      const __m256d halfY = _mm256_mul_pd(_mm256_sub_pd(upperY, lowerY), half);
+      const __m256d along = _mm256_add_pd(_mm256_mul_pd(_mm256_sub_pd(centreX, pointX), normalX),
+                                          _mm256_mul_pd(_mm256_sub_pd(centreY, pointY), normalY));
+      const __m256d extent = _mm256_add_pd(_mm256_mul_pd(absX, halfX), _mm256_mul_pd(absY, halfY));
+      const __m256d hit = _mm256_cmp_pd(_mm256_sub_pd(along, extent), zero, _CMP_LE_OQ);
+      bits = _mm256_or_si256(bits, _mm256_and_si256(_mm256_castpd_si256(hit), bit));
+    };
+    if (retest == ~std::uint64_t{0}) {  // a crowd in motion: every box, no walk over the bits
+      __m256i bit = _mm256_set1_epi64x(1);
+      for (std::size_t j = 0; j < 64; ++j) {
+        test(j, bit);
+        bit = _mm256_add_epi64(bit, bit);
+      }
+    } else {
+      for (std::uint64_t rest = retest; rest != 0; rest &= rest - 1)
+        test(static_cast<std::size_t>(std::countr_zero(rest)),
+             _mm256_set1_epi64x(static_cast<long long>(rest & (~rest + 1))));
+    }
+    alignas(32) std::uint64_t found[fusedBorders];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(found), bits);
+    for (std::size_t k = 0; k < borders; ++k) {
+      std::uint64_t& word = reach[k * words + w];
+      word = (word & ~retest) | found[k];
+    }
+  }
+}
+#endif
+
 /// Sets in @p reach (one word per border of @p lines) the bits of @p retest whose boxes (from
 /// @p boxes, the word's first) reach behind each border. A whole word of moved shapes (a crowd
 /// in motion) is tested without the walk over its bits, in double two boxes at a time with SSE2
@@ -363,10 +427,27 @@ bool Simulator::findBorderReachTogether(std::size_t words) {
   const std::size_t borders = borderShapes_.size();
   if (borders == 0) return true;  // nothing to reach
   if (borders > fusedBorders) return false;
+  for (std::size_t k = 0; k < borders; ++k)
+    if (shapeMoved_[borderShapes_[k]] != 0) return false;
+#if defined(THYRIX_AVX_DISPATCH)
+  if constexpr (std::is_same_v<real, double>) {
+    if (processorHasAvx2()) {
+      static_assert(std::is_standard_layout_v<ShapeGeometry> &&
+                        offsetof(ShapeGeometry, p1) == 2 * sizeof(real),
+                    "a border's point and normal are read as four coordinates");
+      const real* lines[fusedBorders];
+      for (std::size_t k = 0; k < fusedBorders; ++k)
+        lines[k] =
+            reinterpret_cast<const real*>(&geometry_[borderShapes_[std::min(k, borders - 1)]]);
+      reachTogetherAvx2(lines, borders, gridMovedBits_.data(), gridBoxes_.data(),
+                        borderReach_.data(), words);
+      return true;
+    }
+  }
+#endif
   BorderLine lines[fusedBorders];
   for (std::size_t k = 0; k < borders; ++k) {
     const std::uint32_t border = borderShapes_[k];
-    if (shapeMoved_[border] != 0) return false;
     lines[k] = borderLine(geometry_[border].p0, geometry_[border].p1);
   }
   for (std::size_t w = 0; w < words; ++w) {
