@@ -175,6 +175,52 @@ inline void capsuleGeometry(Vector2 r, Vector2 axis, Vector2& p0, Vector2& p1, R
   gridBox = {least - reach, most + reach};
 }
 
+/// A circle's geometry at centre @p r, exactly as Simulator::updateCircle computes it: its
+/// axis @p p0, @p p1 (the centre twice), its travel from the centre's last value (@p p0) when
+/// @p known, returned, its grid box @p gridBox (widened by @p radius, @p margin and the travel),
+/// and its box taken into the body box (@p boxMin, @p boxMax). In double, with SSE2, the x and
+/// y of each step in one instruction (a crowd's circles in motion at every step): the same
+/// operations in the same order on the same values, so the same bits (see capsuleGeometry).
+template <class Real>
+inline Real circleGeometry(Vector2 r, Vector2& p0, Vector2& p1, Real radius, Real margin,
+                           Real travelFactor, bool known, BoundingBox& gridBox, Vector2& boxMin,
+                           Vector2& boxMax) {
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<Real, double>) {
+    const __m128d centre = loadPair<Real>(r);
+    const __m128d last = loadPair<Real>(p0);
+    storePair<Real>(p0, centre);
+    storePair<Real>(p1, centre);
+    const __m128d round = _mm_set1_pd(radius);
+    storePair<Real>(boxMin, _mm_min_pd(_mm_sub_pd(centre, round), loadPair<Real>(boxMin)));
+    storePair<Real>(boxMax, _mm_max_pd(_mm_add_pd(centre, round), loadPair<Real>(boxMax)));
+    Real travel = 0;
+    if (known) {
+      const __m128d noSign = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffff));
+      const __m128d d = _mm_and_pd(_mm_sub_pd(centre, last), noSign);  // |dx|, |dy|
+      travel = std::min(travelFactor * _mm_cvtsd_f64(_mm_add_sd(d, _mm_unpackhi_pd(d, d))), radius);
+    }
+    const __m128d reach = _mm_set1_pd(radius + margin + travel);
+    storePair<Real>(gridBox.lower, _mm_sub_pd(centre, reach));
+    storePair<Real>(gridBox.upper, _mm_add_pd(centre, reach));
+    return travel;
+  }
+#endif
+  const Vector2 last = p0;
+  p0 = r;
+  p1 = r;
+  include(boxMin, boxMax, r - Vector2{radius, radius}, r + Vector2{radius, radius});
+  Real travel = 0;
+  if (known) {
+    const Vector2 d = r - last;
+    travel = std::min(travelFactor * (std::abs(d.x) + std::abs(d.y)), radius);
+  }
+  const Real widening = radius + margin + travel;
+  const Vector2 reach{widening, widening};
+  gridBox = {r - reach, r + reach};
+  return travel;
+}
+
 /// A word of 8 bytes, byte @p i @p value, the others 0 (by bytes: the same in either byte order).
 constexpr std::uint64_t byteWord(std::size_t i, unsigned char value) {
   std::array<unsigned char, 8> bytes{};
@@ -304,26 +350,15 @@ THYRIX_ALWAYS_INLINE void Simulator::placeLinkCapsule(Vector2 r, real alpha, Vec
 THYRIX_ALWAYS_INLINE real Simulator::updateCircle(std::uint32_t s, Vector2 r, bool poseKnown,
                                                   Vector2& boxMin, Vector2& boxMax) {
   ShapeGeometry& g = geometry_[s];
-  const Vector2 last = g.p0;
-  g.p0 = r;
-  g.p1 = r;
-  const real radius = g.radius;
-  include(boxMin, boxMax, r - Vector2{radius, radius}, r + Vector2{radius, radius});
   const std::uint32_t slot = gridSlot_[s];
   gridMovedBits_[slot / 64] |= std::uint64_t{1} << (slot % 64);
   // How far the shape went in the last step, a bound on how far it goes in this one if it
   // keeps its speed: |dx| + |dy| (no square root; at most 1.42 times the distance), capped
-  // at the radius (a shape moved by hand did not travel).
-  real travel = 0;
-  if (poseKnown) {
-    const Vector2 d = r - last;
-    travel = std::min(geometryTravel_ * (std::abs(d.x) + std::abs(d.y)), radius);
-  }
+  // at the radius (a shape moved by hand did not travel). Its grid box is its own box (not
+  // the body's), widened by its speculative margin and travel.
+  const real travel = circleGeometry<real>(r, g.p0, g.p1, g.radius, g.margin, geometryTravel_,
+                                           poseKnown, gridBoxes_[slot], boxMin, boxMax);
   g.travel = travel;
-  // The shape's own box (not the body's), widened by its speculative margin and travel.
-  const real widening = radius + g.margin + travel;
-  const Vector2 reach{widening, widening};
-  gridBoxes_[slot] = {r - reach, r + reach};
   return travel;
 }
 
