@@ -16,6 +16,9 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if defined(THYRIX_AVX_DISPATCH)
+#include <immintrin.h>
+#endif
 
 namespace thyrix {
 
@@ -660,45 +663,93 @@ void Simulator::updateGeometry() {
   pendingBodies_.resize(states.size());
   std::uint32_t* const pending = pendingBodies_.data();
   std::uint32_t pendingCount = 0;
+  // A body is unchanged if its pose and its collision filters are: its rigid parts are then
+  // where they were (followOwner would put them there again), unless moved by hand, which the
+  // parts' own poses show; so do parts placed by their owner (articulated links). Every field
+  // is compared by its bits (`fixed` never matches before the first detection), the filters
+  // with the sensors and the travel in one word (see filterKey).
+  const auto poseDifference = [](const PhysicalObject& body, const BodyState& state) {
+    return (bitsOf(body.r.x) ^ bitsOf(state.r.x)) | (bitsOf(body.r.y) ^ bitsOf(state.r.y)) |
+           (bitsOf(body.alpha) ^ bitsOf(state.alpha));
+  };
+  const auto flagDifference = [](const PhysicalObject& body, const BodyState& state) {
+    return (filterBytes(body) & comparedMask) ^ state.filterKey;
+  };
+  // A body that differs (@p pose, @p flags not both 0): moved, travelling, or with sensors.
+  const auto visit = [&](BodyState& state, std::uint64_t pose,
+                         std::uint64_t flags) THYRIX_LAMBDA_ALWAYS_INLINE {
+    const std::uint64_t filters = flags & filterMask;
+    const bool changed = (pose | filters) != 0;
+    if (changed || (flags & travellingBit) != 0) {  // for the second loop
+      // (But a crowd's body in motion, updated while its object is at hand.)
+      if (state.standaloneCircle && filters == 0) {
+        updateMovedCircle(state, changed);
+        return;
+      }
+      // (Its index from its address here only, off the common path: a division.)
+      const auto index = static_cast<std::uint32_t>(&state - states.data());
+      pending[pendingCount++] = 4 * index + (filters != 0 ? 2 : 0) + (changed ? 1 : 0);
+      return;
+    }
+    // At rest, with sensors: a primitive of its own (or a shapeless body) has nothing else to
+    // do but note them (in any order: each sensing primitive is reset and read alone).
+    if (state.standalone) sensingPrimitives_.push_back(&static_cast<Primitive&>(*state.object));
+  };
   // In two copies: with everything recomputed (every body then differs), and without.
   const auto check = [&](auto everythingConstant) THYRIX_LAMBDA_ALWAYS_INLINE {
     for (BodyState& state : states) {
-      PhysicalObject& body = *state.object;
-      // A body is unchanged if its pose and its collision filters are: its rigid parts are
-      // then where they were (followOwner would put them there again), unless moved by hand,
-      // which the parts' own poses show; so do parts placed by their owner (articulated links).
-      // Every field is compared at once, by its bits (`fixed` never matches before the first
-      // detection), the filters with the sensors in one word (see filterKey).
-      const std::uint64_t pose = decltype(everythingConstant)::value
-                                     ? ~std::uint64_t{0}
-                                     : (bitsOf(body.r.x) ^ bitsOf(state.r.x)) |
-                                           (bitsOf(body.r.y) ^ bitsOf(state.r.y)) |
-                                           (bitsOf(body.alpha) ^ bitsOf(state.alpha));
-      const std::uint64_t flags = (filterBytes(body) & comparedMask) ^ state.filterKey;
+      const PhysicalObject& body = *state.object;
+      const std::uint64_t pose =
+          decltype(everythingConstant)::value ? ~std::uint64_t{0} : poseDifference(body, state);
+      const std::uint64_t flags = flagDifference(body, state);
       if ((pose | flags) == 0) [[likely]]  // at rest, without sensors, not travelling
         continue;
-      const std::uint64_t filters = flags & filterMask;
-      const bool changed = (pose | filters) != 0;
-      if (changed || (flags & travellingBit) != 0) {  // for the second loop
-        // (But a crowd's body in motion, updated while its object is at hand.)
-        if (state.standaloneCircle && filters == 0) {
-          updateMovedCircle(state, changed);
-          continue;
-        }
-        // (Its index from its address here only, off the common path: a division.)
-        const auto index = static_cast<std::uint32_t>(&state - states.data());
-        pending[pendingCount++] = 4 * index + (filters != 0 ? 2 : 0) + (changed ? 1 : 0);
-        continue;
-      }
-      // At rest, with sensors: a primitive of its own (or a shapeless body) has nothing else
-      // to do but note them (in any order: each sensing primitive is reset and read alone).
-      if (state.standalone) sensingPrimitives_.push_back(&static_cast<Primitive&>(body));
+      visit(state, pose, flags);
     }
   };
-  if (everything)
+#if defined(THYRIX_AVX_DISPATCH)
+  // With AVX the pose in one comparison: x, y and the angle, and the 8 bytes after them,
+  // ignored (the body's direction cache, the state's filters), read as four lanes. (In double
+  // only: a float build instantiates it empty, and never calls it.)
+  const auto checkAvx = [&](auto realConstant) __attribute__((target("avx"))) {
+    using Real = decltype(realConstant);
+    if constexpr (std::is_same_v<Real, double>) {
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Winvalid-offsetof"
+      static_assert(
+          offsetof(PhysicalObject, alpha) == offsetof(PhysicalObject, r) + 2 * sizeof(Real) &&
+              offsetof(PhysicalObject, r) + 4 * sizeof(Real) <= sizeof(PhysicalObject) &&
+              offsetof(BodyState, alpha) == offsetof(BodyState, r) + 2 * sizeof(Real) &&
+              offsetof(BodyState, r) + 4 * sizeof(Real) <= sizeof(BodyState),
+          "a pose is read as the first three of four lanes");
+#pragma GCC diagnostic pop
+      const __m256i poseLanes = _mm256_set_epi64x(0, -1, -1, -1);
+      for (BodyState& state : states) {
+        const PhysicalObject& body = *state.object;
+        const __m256d difference =
+            _mm256_xor_pd(_mm256_loadu_pd(static_cast<const Real*>(&body.r.x)),
+                          _mm256_loadu_pd(static_cast<const Real*>(&state.r.x)));
+        const std::uint64_t flags = flagDifference(body, state);
+        if (_mm256_testz_si256(_mm256_castpd_si256(difference), poseLanes) != 0 && flags == 0)
+            [[likely]]
+          continue;
+        visit(state, poseDifference(body, state), flags);
+      }
+    }
+  };
+#endif
+  if (everything) {
     check(std::true_type{});
-  else
-    check(std::false_type{});
+  } else {
+    bool checked = false;
+#if defined(THYRIX_AVX_DISPATCH)
+    if (std::is_same_v<real, double> && processorHasAvx()) {
+      checkAvx(real{});
+      checked = true;
+    }
+#endif
+    if (!checked) check(std::false_type{});
+  }
   // The bodies that changed, or whose several shapes are compared one by one, in their own
   // loop: the one above, run for every body at every step, then keeps everything in
   // registers (measured: one loop spilled and took 45 instructions a body at rest, not 29).
