@@ -428,24 +428,30 @@ bool Simulator::findBorderReachTogether(std::size_t words) {
   const std::size_t borders = borderShapes_.size();
   if (borders == 0) return true;  // nothing to reach
   if (borders > fusedBorders) return false;
-  for (std::size_t k = 0; k < borders; ++k)
-    if (shapeMoved_[borderShapes_[k]] != 0) return false;
 #if defined(THYRIX_AVX_DISPATCH)
   if constexpr (std::is_same_v<real, double>) {
     if (processorHasAvx2()) {
       static_assert(std::is_standard_layout_v<ShapeGeometry> &&
                         offsetof(ShapeGeometry, p1) == 2 * sizeof(real),
                     "a border's point and normal are read as four coordinates");
+      const std::uint32_t* const borderShapes = borderShapes_.data();
+      const std::uint8_t* const shapeMoved = shapeMoved_.data();
+      const ShapeGeometry* const geometry = geometry_.data();
       const real* lines[fusedBorders];
-      for (std::size_t k = 0; k < fusedBorders; ++k)
-        lines[k] =
-            reinterpret_cast<const real*>(&geometry_[borderShapes_[std::min(k, borders - 1)]]);
+      for (std::size_t k = 0; k < borders; ++k) {
+        const std::uint32_t border = borderShapes[k];
+        if (shapeMoved[border] != 0) return false;
+        lines[k] = reinterpret_cast<const real*>(geometry + border);
+      }
+      for (std::size_t k = borders; k < fusedBorders; ++k) lines[k] = lines[borders - 1];
       reachTogetherAvx2(lines, borders, gridMovedBits_.data(), gridBoxes_.data(),
                         borderReach_.data(), words);
       return true;
     }
   }
 #endif
+  for (std::size_t k = 0; k < borders; ++k)
+    if (shapeMoved_[borderShapes_[k]] != 0) return false;
   BorderLine lines[fusedBorders];
   for (std::size_t k = 0; k < borders; ++k) {
     const std::uint32_t border = borderShapes_[k];
