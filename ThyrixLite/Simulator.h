@@ -321,7 +321,9 @@ class Simulator : public World {
   /// caller notes it: noteContactPair()).
   void appendContact(std::uint32_t shapeA, std::uint32_t shapeB, const ManifoldPoint& point,
                      Vector2 normal);
-  void reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB);
+  /// Appends the last detection's contacts of shapes @p shapeA and @p shapeB, of two bodies,
+  /// shape A the one addContacts() would take first (rest skipping: neither moved).
+  void reusePair(std::uint32_t shapeA, std::uint32_t shapeB);
   void indexPreviousContacts();
   // Each contact's pair as detection appended it, and the pairs of each shape A chained in
   // list order, noted as contacts are appended (noteContactPair()): the next step finds a
@@ -350,6 +352,8 @@ class Simulator : public World {
   /// point), in @p notes (from notesFor()).
   void noteContactPair(ContactPair* notes, std::uint32_t position, std::uint32_t shapeA,
                        std::uint32_t shapeB, bool first);
+  /// noteContactPair()'s chaining of a pair's first contact, at @p position.
+  void chainPair(ContactPair* notes, std::uint32_t position, std::uint32_t shapeA);
   /// The notes of `contacts`, with room for @p count contacts.
   ContactPair* notesFor(std::size_t count);
   /// Positions [begin, end) in previousContacts_: a pair's contacts, consecutive in a list.
@@ -359,7 +363,24 @@ class Simulator : public World {
   };
   /// Where in previousContacts_ the last step's contacts between @p shapeA and @p shapeB
   /// are (in their order of detection).
-  PreviousRange previousContactsOf(std::uint32_t shapeA, std::uint32_t shapeB);
+  PreviousRange previousContactsOf(std::uint32_t shapeA, std::uint32_t shapeB) {
+    // Inline: pairs come in nearly the last step's order, so the pair's contacts usually
+    // begin where the last pair's ended (a pair's contacts are consecutive; the cursor is
+    // 0 or the end of a pair's, so a pair found there begins there). Else a search.
+    const std::uint64_t key = pairKey(shapeA, shapeB);
+    const ContactPair* const list = previousPairs_.data();
+    const std::size_t count = previousContacts_.size();
+    std::size_t first = previousCursor_;
+    if (!(first < count && list[first].key == key)) first = findPreviousPair(key, shapeA);
+    std::size_t last = first;
+    while (last < count && list[last].key == key) ++last;
+    // (A pair in reach without contacts leaves the cursor where the next pair's may begin.)
+    if (last != first) previousCursor_ = last;
+    return {static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last)};
+  }
+  /// previousContactsOf() when the pair's contacts do not begin at previousCursor_: the
+  /// first of them, or previousContacts_.size() if none.
+  std::size_t findPreviousPair(std::uint64_t key, std::uint32_t shapeA);
   /// Whether @p chain, shape @p shapeA's in previousContacts_, is a sorted run (PairChain);
   /// the answer is kept in the chain.
   bool sortedRun(PairChain& chain, std::uint32_t shapeA);
@@ -474,6 +495,8 @@ class Simulator : public World {
   /// Counts a contact of bodies @p bodyA and @p bodyB (countedObjects_ has room for every
   /// object and one more).
   void countContact(std::uint32_t bodyA, std::uint32_t bodyB);
+  /// countContact() @p n times (the contacts of a pair).
+  void countPairContacts(std::uint32_t bodyA, std::uint32_t bodyB, std::uint32_t n);
   /// Zeroes the counts, and sizes countedObjects_ for the objects.
   void resetCounts();
 

@@ -117,7 +117,9 @@ void Simulator::detectContacts() {
   // contacts, so the order is the pairs'.
   CirclePair batch[circleBatch];
   std::size_t batched = 0;
+  // (An empty batch is no call: most pairs of a small world at rest find it empty.)
   const auto flush = [&] {
+    if (batched == 0) return;
     addCirclePairs(std::span<const CirclePair>(batch, batched));
     batched = 0;
   };
@@ -130,8 +132,8 @@ void Simulator::detectContacts() {
     const Shape& sa = shapes_[a];
     const Shape& sb = shapes_[b];
     if (sa.body == sb.body) {
-      // Tested whether or not the shapes moved (reuseContacts too sends such a pair to
-      // addContacts: whether it collides is its object's call).
+      // Tested whether or not the shapes moved (so is a border's: whether it collides is its
+      // object's call).
       if (ownShapesMayTouch(multiBodies_[sa.body], bodyStates_[sa.body].firstShape, a, b)) {
         flush();
         addContacts(a, b);
@@ -140,7 +142,9 @@ void Simulator::detectContacts() {
     }
     if (reuse && (shapeMoved_[a] | shapeMoved_[b]) == 0) {
       flush();
-      reuseContacts(a, b);
+      // (Of two bodies: reusePair's shape A is the one addContacts would take first.)
+      const bool swap = sb.type < sa.type;
+      reusePair(swap ? b : a, swap ? a : b);
     } else if (sa.type == ShapeType::Circle && sb.type == ShapeType::Circle) {
       // Kept (the count advanced) without a branch: which candidates are in reach is random to
       // the predictor.
@@ -394,12 +398,15 @@ void Simulator::findBorderContacts(bool reuse) {
     const std::uint32_t border = borderShapes_[k];
     // A pair keeps its contacts if neither the border nor the shape moved.
     const bool borderMoved = !remembered || shapeMoved_[border] != 0;
+    const std::uint32_t borderBody = shapes_[border].body;
     for (std::size_t w = 0; w < words; ++w) {
       for (std::uint64_t bits = borderReach_[k * words + w]; bits != 0; bits &= bits - 1) {
         const std::uint32_t shape =
             gridShapes_[64 * w + static_cast<std::size_t>(std::countr_zero(bits))];
-        if (reuse && !borderMoved && shapeMoved_[shape] == 0)
-          reuseContacts(border, shape);
+        // (The border is shape A: a half-plane comes first. A pair within one body is always
+        // tested: whether it collides is its object's call.)
+        if (reuse && !borderMoved && shapeMoved_[shape] == 0 && shapes_[shape].body != borderBody)
+          reusePair(border, shape);
         else
           addContacts(border, shape);
       }
@@ -490,13 +497,8 @@ inline Simulator::ContactPair* Simulator::notesFor(std::size_t count) {
   return contactPairs_.data();
 }
 
-// Inline: every contact appended is noted (SimulatorPreviousContacts.cpp reads the notes).
-inline void Simulator::noteContactPair(ContactPair* notes, std::uint32_t position,
-                                       std::uint32_t shapeA, std::uint32_t shapeB, bool first) {
-  // A detection visits each pair once and appends its points one after another: the first
-  // point's pair is chained to shape A's last one, or begins its chain.
-  notes[position] = {pairKey(shapeA, shapeB), noPair};
-  if (!first) return;
+// Inline: the first contact of every pair appended is chained.
+inline void Simulator::chainPair(ContactPair* notes, std::uint32_t position, std::uint32_t shapeA) {
   // Without a branch (whether a circle's pair is its first as shape A is random; GCC made
   // the selects a branch): a mask of ones when the chain goes on. A shape's first pair writes
   // its own link (noPair, as it is).
@@ -507,6 +509,15 @@ inline void Simulator::noteContactPair(ContactPair* notes, std::uint32_t positio
   chain.last = position;
   chain.pairsAndRun = ((chain.pairsAndRun + 1) & on) | (1u & ~on);
   chain.stamp = listStamp_;
+}
+
+// Inline: every contact appended is noted (SimulatorPreviousContacts.cpp reads the notes).
+inline void Simulator::noteContactPair(ContactPair* notes, std::uint32_t position,
+                                       std::uint32_t shapeA, std::uint32_t shapeB, bool first) {
+  // A detection visits each pair once and appends its points one after another: the first
+  // point's pair is chained to shape A's last one, or begins its chain.
+  notes[position] = {pairKey(shapeA, shapeB), noPair};
+  if (first) chainPair(notes, position, shapeA);
 }
 
 // Inline: every contact appended is counted.
@@ -521,30 +532,49 @@ inline void Simulator::countContact(std::uint32_t bodyA, std::uint32_t bodyB) {
   countedCount_ += std::size_t{count[bodyB]++ == 0};
 }
 
+// Inline: every pair reused is counted, with its @p n contacts.
+inline void Simulator::countPairContacts(std::uint32_t bodyA, std::uint32_t bodyB,
+                                         std::uint32_t n) {
+  // As countContact() n times (bodies listed in the same order), without a branch.
+  std::uint32_t* const count = objectContactCursor_.data();
+  std::uint32_t* const counted = countedObjects_.data();
+  std::size_t listed = countedCount_;
+  counted[listed] = bodyA;
+  listed += std::size_t{count[bodyA] == 0};
+  count[bodyA] += n;
+  counted[listed] = bodyB;
+  listed += std::size_t{count[bodyB] == 0};
+  count[bodyB] += n;
+  countedCount_ = listed;
+}
+
 void Simulator::resetCounts() {
   for (std::size_t k = 0; k < countedCount_; ++k) objectContactCursor_[countedObjects_[k]] = 0;
   countedCount_ = 0;
   if (countedObjects_.size() < objects.size() + 1) countedObjects_.resize(objects.size() + 1);
 }
 
-void Simulator::reuseContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
-  // Neither shape moved and its filters did not change: the contacts are last detection's.
-  // (Pairs within one multi-body object are always tested: whether they collide is its call.)
-  if (shapes_[shapeB].type < shapes_[shapeA].type) std::swap(shapeA, shapeB);
-  if (shapes_[shapeA].body == shapes_[shapeB].body) {
-    addContacts(shapeA, shapeB);
-    return;
-  }
+void Simulator::reusePair(std::uint32_t shapeA, std::uint32_t shapeB) {
+  // Neither shape moved and its filters did not change: the contacts are last detection's,
+  // copied as they were but for the force (the solver's output, not detection's). A pair's
+  // contacts have the same bodies: counted once, with the pair's count.
   const PreviousRange range = previousContactsOf(shapeA, shapeB);
-  auto position = static_cast<std::uint32_t>(contacts.items_.size());
-  ContactPair* const notes = notesFor(position + std::size_t{range.end - range.begin});
-  for (std::uint32_t k = range.begin; k < range.end; ++k) {
-    contacts.items_.push_back(previousContacts_[k]);
-    contacts.items_.back().force = 0;  // the solver's output, not detection's
-    countContact(previousContacts_[k].bodyA, previousContacts_[k].bodyB);
-    noteContactPair(notes, position++, shapeA, shapeB, k == range.begin);
-    ++statistics_.reusedContacts;
+  const std::uint32_t count = range.end - range.begin;
+  if (count == 0) return;  // in reach, not touching
+  std::vector<GlobalContactInfo>& items = contacts.items_;
+  const auto position = static_cast<std::uint32_t>(items.size());
+  ContactPair* const notes = notesFor(std::size_t{position} + count);
+  const GlobalContactInfo* const from = previousContacts_.data() + range.begin;
+  const std::uint64_t key = pairKey(shapeA, shapeB);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    GlobalContactInfo contact = from[i];
+    contact.force = 0;
+    items.push_back(contact);
+    notes[position + i] = {key, noPair};
   }
+  countPairContacts(from->bodyA, from->bodyB, count);
+  chainPair(notes, position, shapeA);
+  statistics_.reusedContacts += count;
 }
 
 // Inline: appendContacts and the circle batches store every contact through it.

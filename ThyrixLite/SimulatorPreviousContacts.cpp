@@ -99,46 +99,36 @@ bool Simulator::sortedRun(PairChain& chain, std::uint32_t shapeA) {
   return chain.pairsAndRun >> runShift == 1;
 }
 
-Simulator::PreviousRange Simulator::previousContactsOf(std::uint32_t shapeA, std::uint32_t shapeB) {
-  const std::uint64_t key = pairKey(shapeA, shapeB);
+std::size_t Simulator::findPreviousPair(std::uint64_t key, std::uint32_t shapeA) {
+  // Not where the last pair's contacts ended: a walk of shape A's chain, or a binary search
+  // for a shape with many pairs.
   const ContactPair* const list = previousPairs_.data();
-  const std::size_t count = previousContacts_.size();
-  // Pairs come in nearly the last step's order: the pair's contacts usually begin where the
-  // last pair's ended (a pair's contacts are consecutive). Else a walk of shape A's chain,
-  // or a binary search for a shape with many pairs.
-  std::size_t first = previousCursor_;
-  if (!(first < count && list[first].key == key && (first == 0 || list[first - 1].key != key))) {
-    first = count;  // none, unless found
-    PairChain& chain = previousChains_[shapeA];
-    if (chain.stamp != previousListStamp_) {
-      // shape A is no shape A of the last step's list
-    } else if ((chain.pairsAndRun & pairCountMask) <= chainedPairs) {
-      for (std::uint32_t k = chain.first; k != noPair; k = list[k].nextOfA) {
-        if (list[k].key == key) {
-          first = k;
-          break;
-        }
+  std::size_t first = previousContacts_.size();  // none, unless found
+  PairChain& chain = previousChains_[shapeA];
+  if (chain.stamp != previousListStamp_) {
+    // shape A is no shape A of the last step's list
+  } else if ((chain.pairsAndRun & pairCountMask) <= chainedPairs) {
+    for (std::uint32_t k = chain.first; k != noPair; k = list[k].nextOfA) {
+      if (list[k].key == key) {
+        first = k;
+        break;
       }
-    } else if (sortedRun(chain, shapeA)) {
-      const auto byKey = [](const ContactPair& pair, std::uint64_t value) {
-        return pair.key < value;
-      };
-      const ContactPair* const end = list + chain.last + 1;
-      const ContactPair* const found = std::lower_bound(list + chain.first, end, key, byKey);
-      if (found != end && found->key == key) first = static_cast<std::size_t>(found - list);
-    } else {
-      if (!previousIndexed_) indexPreviousContacts();
-      const std::uint64_t* const pairs = previousSortedKeys_.data();
-      const std::uint64_t* const end = pairs + previousStart_[shapeA + 1];
-      const std::uint64_t* const found = std::lower_bound(pairs + previousStart_[shapeA], end, key);
-      if (found != end && *found == key) first = previousOrder_[found - pairs];
     }
+  } else if (sortedRun(chain, shapeA)) {
+    const auto byKey = [](const ContactPair& pair, std::uint64_t value) {
+      return pair.key < value;
+    };
+    const ContactPair* const end = list + chain.last + 1;
+    const ContactPair* const found = std::lower_bound(list + chain.first, end, key, byKey);
+    if (found != end && found->key == key) first = static_cast<std::size_t>(found - list);
+  } else {
+    if (!previousIndexed_) indexPreviousContacts();
+    const std::uint64_t* const pairs = previousSortedKeys_.data();
+    const std::uint64_t* const end = pairs + previousStart_[shapeA + 1];
+    const std::uint64_t* const found = std::lower_bound(pairs + previousStart_[shapeA], end, key);
+    if (found != end && *found == key) first = previousOrder_[found - pairs];
   }
-  std::size_t last = first;
-  while (last < count && list[last].key == key) ++last;
-  // (A pair in reach without contacts leaves the cursor where the next pair's may begin.)
-  if (last != first) previousCursor_ = last;
-  return {static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last)};
+  return first;
 }
 
 real Simulator::searchPreviousForce(const GlobalContactInfo& contact, std::size_t position,
