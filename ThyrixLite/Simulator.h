@@ -352,8 +352,14 @@ class Simulator : public World {
   /// point), in @p notes (from notesFor()).
   void noteContactPair(ContactPair* notes, std::uint32_t position, std::uint32_t shapeA,
                        std::uint32_t shapeB, bool first);
-  /// noteContactPair()'s chaining of a pair's first contact, at @p position.
+  /// noteContactPair()'s chaining of a pair's first contact, at @p position (from
+  /// unchainedContacts on).
   void chainPair(ContactPair* notes, std::uint32_t position, std::uint32_t shapeA);
+  /// A list of up to this many contacts has no chains (its lookups scan it); a longer one
+  /// has its first pairs chained when its detection ends.
+  static constexpr std::size_t unchainedContacts = 16;
+  /// Chains the pairs of this detection (from position @p start) that chainPair() left out.
+  void chainFirstPairs(std::uint32_t start);
   /// The notes of `contacts`, with room for @p count contacts.
   ContactPair* notesFor(std::size_t count);
   /// Positions [begin, end) in previousContacts_: a pair's contacts, consecutive in a list.

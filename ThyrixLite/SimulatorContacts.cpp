@@ -91,6 +91,7 @@ void Simulator::updateNeverPaired() {
 void Simulator::detectContacts() {
   // Appending to contacts of another detection: this list is no basis for the next reuse.
   const bool fromEmpty = contacts.empty();
+  const auto start = static_cast<std::uint32_t>(contacts.size());
   updateGeometry();
   // Reuse needs the last detection's complete list (eraseContacts kept it aside).
   // (Only pairs of unmoved shapes are reused: none when every shape moved.)
@@ -157,6 +158,7 @@ void Simulator::detectContacts() {
   }
   flush();
   findBorderContacts(reuse);
+  if (contacts.size() > unchainedContacts) chainFirstPairs(start);
   contactsComplete_ = fromEmpty;
   previousValid_ = false;  // used: the next detection compares against this one
   statistics_.contacts = contacts.size();
@@ -497,17 +499,21 @@ inline Simulator::ContactPair* Simulator::notesFor(std::size_t count) {
   return contactPairs_.data();
 }
 
-// Inline: the first contact of every pair appended is chained.
+// Inline: the first contact of every pair appended from position unchainedContacts on is
+// chained. (A short list, a small world's, is searched by a scan instead (findPreviousPair);
+// its first pairs are chained if it grows longer, at the end of the detection:
+// chainFirstPairs().)
 inline void Simulator::chainPair(ContactPair* notes, std::uint32_t position, std::uint32_t shapeA) {
   // Without a branch (whether a circle's pair is its first as shape A is random; GCC made
   // the selects a branch): a mask of ones when the chain goes on. A shape's first pair writes
   // its own link (noPair, as it is).
+  // (noPair is all ones.)
   PairChain& chain = pairChains_[shapeA];
   const std::uint32_t on = 0u - std::uint32_t{chain.stamp == listStamp_};
-  notes[(chain.last & on) | (position & ~on)].nextOfA = (position & on) | (noPair & ~on);
+  notes[(chain.last & on) | (position & ~on)].nextOfA = position | ~on;
   chain.first = (chain.first & on) | (position & ~on);
   chain.last = position;
-  chain.pairsAndRun = ((chain.pairsAndRun + 1) & on) | (1u & ~on);
+  chain.pairsAndRun = (chain.pairsAndRun & on) + 1;
   chain.stamp = listStamp_;
 }
 
@@ -517,7 +523,7 @@ inline void Simulator::noteContactPair(ContactPair* notes, std::uint32_t positio
   // A detection visits each pair once and appends its points one after another: the first
   // point's pair is chained to shape A's last one, or begins its chain.
   notes[position] = {pairKey(shapeA, shapeB), noPair};
-  if (first) chainPair(notes, position, shapeA);
+  if (first && position >= unchainedContacts) chainPair(notes, position, shapeA);
 }
 
 // Inline: every contact appended is counted.
@@ -548,6 +554,26 @@ inline void Simulator::countPairContacts(std::uint32_t bodyA, std::uint32_t body
   countedCount_ = listed;
 }
 
+void Simulator::chainFirstPairs(std::uint32_t start) {
+  // The pairs chainPair() left out (positions start to unchainedContacts - 1), put at the
+  // heads of their chains last first: the chains are then as if each pair had been chained
+  // in order.
+  ContactPair* const notes = contactPairs_.data();
+  const auto end = static_cast<std::uint32_t>(std::min(contacts.size(), unchainedContacts));
+  for (std::uint32_t position = end; position-- > start;) {
+    if (position > start && notes[position - 1].key == notes[position].key)
+      continue;  // not its pair's first contact
+    PairChain& chain = pairChains_[notes[position].key >> 32];
+    if (chain.stamp == listStamp_) {
+      notes[position].nextOfA = chain.first;
+      chain.first = position;
+      ++chain.pairsAndRun;
+    } else {
+      chain = {position, position, 1, listStamp_};  // (its link is noPair, as noted)
+    }
+  }
+}
+
 void Simulator::resetCounts() {
   for (std::size_t k = 0; k < countedCount_; ++k) objectContactCursor_[countedObjects_[k]] = 0;
   countedCount_ = 0;
@@ -573,7 +599,7 @@ void Simulator::reusePair(std::uint32_t shapeA, std::uint32_t shapeB) {
     notes[position + i] = {key, noPair};
   }
   countPairContacts(from->bodyA, from->bodyB, count);
-  chainPair(notes, position, shapeA);
+  if (position >= unchainedContacts) chainPair(notes, position, shapeA);
   statistics_.reusedContacts += count;
 }
 
@@ -623,16 +649,25 @@ void Simulator::addCirclePairs(std::span<const CirclePair> pairs) {
   // in a loop over its points).
   auto position = static_cast<std::uint32_t>(contacts.items_.size());
   ContactPair* const notes = notesFor(position + pairs.size());
-  for (const CirclePair& pair : pairs) {
-    Vector2 normal;
-    ManifoldPoint p;
-    if (!narrow_phase::circlesPoint({pair.centreAx, pair.centreAy}, pair.radiusA,
-                                    {pair.centreBx, pair.centreBy}, pair.radiusB, pair.margin,
-                                    normal, p))
-      continue;
-    appendContact(pair.shapeA, pair.shapeB, p, normal);
-    noteContactPair(notes, position++, pair.shapeA, pair.shapeB, true);
-  }
+  const auto add = [&](auto longList) {
+    for (const CirclePair& pair : pairs) {
+      Vector2 normal;
+      ManifoldPoint p;
+      if (!narrow_phase::circlesPoint({pair.centreAx, pair.centreAy}, pair.radiusA,
+                                      {pair.centreBx, pair.centreBy}, pair.radiusB, pair.margin,
+                                      normal, p))
+        continue;
+      appendContact(pair.shapeA, pair.shapeB, p, normal);
+      notes[position] = {pairKey(pair.shapeA, pair.shapeB), noPair};
+      if (longList || position >= unchainedContacts) chainPair(notes, position, pair.shapeA);
+      ++position;
+    }
+  };
+  // (A crowd's batches begin past the unchained contacts: they chain every pair untested.)
+  if (position >= unchainedContacts)
+    add(std::true_type{});
+  else
+    add(std::false_type{});
 }
 
 void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {

@@ -100,10 +100,16 @@ bool Simulator::sortedRun(PairChain& chain, std::uint32_t shapeA) {
 }
 
 std::size_t Simulator::findPreviousPair(std::uint64_t key, std::uint32_t shapeA) {
-  // Not where the last pair's contacts ended: a walk of shape A's chain, or a binary search
-  // for a shape with many pairs.
+  // Not where the last pair's contacts ended: a scan of a short list, else a walk of shape
+  // A's chain, or a binary search for a shape with many pairs.
   const ContactPair* const list = previousPairs_.data();
-  std::size_t first = previousContacts_.size();  // none, unless found
+  const std::size_t count = previousContacts_.size();
+  if (count <= unchainedContacts) {  // a short list, not chained: a scan
+    for (std::size_t k = 0; k < count; ++k)
+      if (list[k].key == key) return k;
+    return count;
+  }
+  std::size_t first = count;  // none, unless found
   PairChain& chain = previousChains_[shapeA];
   if (chain.stamp != previousListStamp_) {
     // shape A is no shape A of the last step's list
