@@ -375,7 +375,7 @@ class Simulator : public World {
     // 0 or the end of a pair's, so a pair found there begins there). Else a search.
     const std::uint64_t key = pairKey(shapeA, shapeB);
     const ContactPair* const list = previousPairs_.data();
-    const std::size_t count = previousContacts_.size();
+    const std::size_t count = previousCount_;
     std::size_t first = previousCursor_;
     if (!(first < count && list[first].key == key)) first = findPreviousPair(key, shapeA);
     std::size_t last = first;
@@ -473,6 +473,9 @@ class Simulator : public World {
   std::vector<std::uint32_t> previousOrder_;       // by shape A (then B if many): positions
   std::vector<std::uint64_t> previousSortedKeys_;  // each previousOrder_ entry's shapes, A then B
   std::size_t previousCursor_ = 0;                 // previousContacts_ after the last pair found
+  // previousContacts_.size() as of the last detection (no contact to look up before one): a
+  // lookup's bound without a division by the size of a contact.
+  std::size_t previousCount_ = 0;
   real geometryFraction_ = 0;      // speculativeFraction the cached margins were computed with
   real geometryTravel_ = 0;        // speculativeTravel the cached travels were computed with
   bool contactsComplete_ = false;  // `contacts` holds exactly one detection's contacts
@@ -490,8 +493,10 @@ class Simulator : public World {
   std::vector<ContactInfo> objectContacts_;  // every object's contacts, object by object
   // Each object's contacts are counted as detection appends them (countContact()), each
   // object listed at its first: indexContacts() then needs no pass of its own to count.
-  // objectContactCursor_ is zero for every object not in countedObjects_ (outside
-  // indexContacts).
+  // objectContactCursor_ is zero for every object in neither countedObjects_ nor
+  // listedObjects_ (outside indexContacts): a listed object's cursor is zeroed as its list
+  // is cleared (clearContactLists(), before any counting: eraseContacts() and
+  // indexContacts() clear the lists first).
   std::vector<std::uint32_t> objectContactCursor_;  // per object: its count, then a cursor
   std::vector<std::uint32_t> countedObjects_;       // the first countedCount_ have counts
   std::size_t countedCount_ = 0;  // (std::size_t: no alias of the uint32 entries it indexes)

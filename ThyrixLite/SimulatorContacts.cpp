@@ -98,6 +98,7 @@ void Simulator::detectContacts() {
   const bool reuse = restSkipping && previousValid_ && fromEmpty;
   previousIndexed_ = false;  // indexed at most once a detection, for the shapes of now
   previousCursor_ = 0;
+  previousCount_ = previousContacts_.size();
   if (pairChains_.size() != shapes_.size()) {  // new shapes: no pair in either list yet
     pairChains_.resize(shapes_.size());
     previousChains_.resize(shapes_.size());
@@ -580,7 +581,7 @@ void Simulator::resetCounts() {
   if (countedObjects_.size() < objects.size() + 1) countedObjects_.resize(objects.size() + 1);
 }
 
-void Simulator::reusePair(std::uint32_t shapeA, std::uint32_t shapeB) {
+inline void Simulator::reusePair(std::uint32_t shapeA, std::uint32_t shapeB) {
   // Neither shape moved and its filters did not change: the contacts are last detection's,
   // copied as they were but for the force (the solver's output, not detection's). A pair's
   // contacts have the same bodies: counted once, with the pair's count.
@@ -718,10 +719,12 @@ void Simulator::indexContacts() {
   countsComplete_ = false;  // the counts become cursors, and are zeroed below
   objectContacts_.resize(2 * contacts.size());
   const std::span<const std::uint32_t> counted(countedObjects_.data(), countedCount_);
+  // Each listed object's slice is known from the counts: it is given now, before it is filled.
   std::uint32_t offset = 0;
   for (const std::uint32_t i : counted) {
     const std::uint32_t n = objectContactCursor_[i];
     objectContactCursor_[i] = offset;
+    objects[i].contacts = std::span(objectContacts_).subspan(offset, n);
     offset += n;
   }
   // The contacts' forces: 0 from detection until the solve gives them (advanceTime() in a
@@ -733,14 +736,7 @@ void Simulator::indexContacts() {
     objectContacts_[objectContactCursor_[c.bodyB]++] =
         ContactInfo{k, c.objectA, c.primitiveB, c.primitiveA, c.point, c.normal, c.depth, c.force};
   }
-  // Each cursor ended where the next listed object's slice begins: slice, and zero it again.
-  std::uint32_t begin = 0;
-  for (const std::uint32_t i : counted) {
-    const std::uint32_t end = objectContactCursor_[i];
-    objects[i].contacts = std::span(objectContacts_).subspan(begin, end - begin);
-    objectContactCursor_[i] = 0;
-    begin = end;
-  }
+  // (Each cursor ends at its slice's end: clearContactLists() zeroes it with the list.)
   // The counted objects are the listed ones now (and none is counted).
   std::swap(listedObjects_, countedObjects_);
   listedCount_ = countedCount_;
@@ -749,7 +745,12 @@ void Simulator::indexContacts() {
 }
 
 void Simulator::clearContactLists() {
-  for (std::size_t k = 0; k < listedCount_; ++k) objects[listedObjects_[k]].contacts = {};
+  // (Also the cursors indexContacts() left: each object's count starts from 0 again.)
+  for (std::size_t k = 0; k < listedCount_; ++k) {
+    const std::uint32_t i = listedObjects_[k];
+    objects[i].contacts = {};
+    objectContactCursor_[i] = 0;
+  }
   listedCount_ = 0;
 }
 

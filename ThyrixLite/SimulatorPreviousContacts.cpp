@@ -103,7 +103,7 @@ std::size_t Simulator::findPreviousPair(std::uint64_t key, std::uint32_t shapeA)
   // Not where the last pair's contacts ended: a scan of a short list, else a walk of shape
   // A's chain, or a binary search for a shape with many pairs.
   const ContactPair* const list = previousPairs_.data();
-  const std::size_t count = previousContacts_.size();
+  const std::size_t count = previousCount_;
   if (count <= unchainedContacts) {  // a short list, not chained: a scan
     for (std::size_t k = 0; k < count; ++k)
       if (list[k].key == key) return k;
