@@ -377,8 +377,11 @@ class Simulator : public World {
     const ContactPair* const list = previousPairs_.data();
     const std::size_t count = previousCount_;
     std::size_t first = previousCursor_;
-    if (!(first < count && list[first].key == key)) first = findPreviousPair(key, shapeA);
-    std::size_t last = first;
+    std::size_t last = first + 1;  // (past the contact found at the cursor)
+    if (!(first < count && list[first].key == key)) {
+      first = findPreviousPair(key, shapeA);
+      last = first;
+    }
     while (last < count && list[last].key == key) ++last;
     // (A pair in reach without contacts leaves the cursor where the next pair's may begin.)
     if (last != first) previousCursor_ = last;
@@ -510,6 +513,8 @@ class Simulator : public World {
   void countPairContacts(std::uint32_t bodyA, std::uint32_t bodyB, std::uint32_t n);
   /// Zeroes the counts, and sizes countedObjects_ for the objects.
   void resetCounts();
+  /// Sizes countedObjects_ for the objects (one more than there are).
+  void fitCountedObjects();
 
   std::vector<SolverBody> bodies_;  // valid for the bodies of this step's rows only
   std::vector<std::uint8_t> movable_;

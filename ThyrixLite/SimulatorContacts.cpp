@@ -3,6 +3,7 @@
 /// geometry is in SimulatorGeometry.cpp).
 #include <ThyrixLite/NarrowPhase.h>
 #include <ThyrixLite/Simulator.h>
+#include <Tools/Inlining.h>
 #include <Tools/ProcessorFeatures.h>
 
 #include <algorithm>
@@ -104,7 +105,7 @@ void Simulator::detectContacts() {
     previousChains_.resize(shapes_.size());
   }
   nextListStamp();
-  if (countedObjects_.size() < objects.size() + 1) countedObjects_.resize(objects.size() + 1);
+  if (countedObjects_.size() < objects.size() + 1) fitCountedObjects();
   contactsSolved_ = false;  // these contacts, until the solver gives them forces
   statistics_.reusedContacts = 0;
   // (Without new objects or objects with rules, there is nothing to look at.)
@@ -575,10 +576,13 @@ void Simulator::chainFirstPairs(std::uint32_t start) {
   }
 }
 
+// Out of line: objects registered since (rare); its callers then save no registers for it.
+THYRIX_NO_INLINE void Simulator::fitCountedObjects() { countedObjects_.resize(objects.size() + 1); }
+
 void Simulator::resetCounts() {
   for (std::size_t k = 0; k < countedCount_; ++k) objectContactCursor_[countedObjects_[k]] = 0;
   countedCount_ = 0;
-  if (countedObjects_.size() < objects.size() + 1) countedObjects_.resize(objects.size() + 1);
+  if (countedObjects_.size() < objects.size() + 1) fitCountedObjects();
 }
 
 inline void Simulator::reusePair(std::uint32_t shapeA, std::uint32_t shapeB) {
@@ -741,7 +745,7 @@ void Simulator::indexContacts() {
   std::swap(listedObjects_, countedObjects_);
   listedCount_ = countedCount_;
   countedCount_ = 0;
-  if (countedObjects_.size() < objects.size() + 1) countedObjects_.resize(objects.size() + 1);
+  if (countedObjects_.size() < objects.size() + 1) fitCountedObjects();
 }
 
 void Simulator::clearContactLists() {
