@@ -585,7 +585,9 @@ void Simulator::resetCounts() {
   if (countedObjects_.size() < objects.size() + 1) fitCountedObjects();
 }
 
-inline void Simulator::reusePair(std::uint32_t shapeA, std::uint32_t shapeB) {
+// Inline at both sites (measured: GCC kept the detection loop's a call, 25 instructions a
+// step more in the arena).
+THYRIX_ALWAYS_INLINE void Simulator::reusePair(std::uint32_t shapeA, std::uint32_t shapeB) {
   // Neither shape moved and its filters did not change: the contacts are last detection's,
   // copied as they were but for the force (the solver's output, not detection's). A pair's
   // contacts have the same bodies: counted once, with the pair's count.
