@@ -508,8 +508,7 @@ inline Simulator::ContactPair* Simulator::notesFor(std::size_t count) {
 inline void Simulator::chainPair(ContactPair* notes, std::uint32_t position, std::uint32_t shapeA) {
   // Without a branch (whether a circle's pair is its first as shape A is random; GCC made
   // the selects a branch): a mask of ones when the chain goes on. A shape's first pair writes
-  // its own link (noPair, as it is).
-  // (noPair is all ones.)
+  // its own link (noPair, all ones, as it is).
   PairChain& chain = pairChains_[shapeA];
   const std::uint32_t on = 0u - std::uint32_t{chain.stamp == listStamp_};
   notes[(chain.last & on) | (position & ~on)].nextOfA = position | ~on;
@@ -722,7 +721,7 @@ void Simulator::indexContacts() {
     resetCounts();
     for (const GlobalContactInfo& c : contacts.items_) countContact(c.bodyA, c.bodyB);
   }
-  countsComplete_ = false;  // the counts become cursors, and are zeroed below
+  countsComplete_ = false;  // the counts become cursors (clearContactLists() zeroes them)
   objectContacts_.resize(2 * contacts.size());
   const std::span<const std::uint32_t> counted(countedObjects_.data(), countedCount_);
   // Each listed object's slice is known from the counts: it is given now, before it is filled.
