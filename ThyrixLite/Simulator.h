@@ -322,8 +322,16 @@ class Simulator : public World {
   void appendContact(std::uint32_t shapeA, std::uint32_t shapeB, const ManifoldPoint& point,
                      Vector2 normal);
   /// Appends the last detection's contacts of shapes @p shapeA and @p shapeB, of two bodies,
-  /// shape A the one addContacts() would take first (rest skipping: neither moved).
+  /// shape A the one addContacts() would take first (rest skipping: neither moved), to the
+  /// run of reused contacts (flushReused() appends it to `contacts`).
   void reusePair(std::uint32_t shapeA, std::uint32_t shapeB);
+  /// Appends the run of reused contacts, previousContacts_[reusedBegin_, reusedEnd_), to
+  /// `contacts` (before any other contact is appended, and when the detection ends).
+  void flushReused();
+  /// flushReused() for a run of at least one contact.
+  void appendReused();
+  std::uint32_t reusedBegin_ = 0;
+  std::uint32_t reusedEnd_ = 0;
   void indexPreviousContacts();
   // Each contact's pair as detection appended it, and the pairs of each shape A chained in
   // list order, noted as contacts are appended (noteContactPair()): the next step finds a
@@ -509,8 +517,6 @@ class Simulator : public World {
   /// Counts a contact of bodies @p bodyA and @p bodyB (countedObjects_ has room for every
   /// object and one more).
   void countContact(std::uint32_t bodyA, std::uint32_t bodyB);
-  /// countContact() @p n times (the contacts of a pair).
-  void countPairContacts(std::uint32_t bodyA, std::uint32_t bodyB, std::uint32_t n);
   /// Zeroes the counts, and sizes countedObjects_ for the objects.
   void resetCounts();
   /// Sizes countedObjects_ for the objects (one more than there are).

@@ -100,6 +100,8 @@ void Simulator::detectContacts() {
   previousIndexed_ = false;  // indexed at most once a detection, for the shapes of now
   previousCursor_ = 0;
   previousCount_ = previousContacts_.size();
+  reusedBegin_ = 0;  // no run of reused contacts yet
+  reusedEnd_ = 0;
   if (pairChains_.size() != shapes_.size()) {  // new shapes: no pair in either list yet
     pairChains_.resize(shapes_.size());
     previousChains_.resize(shapes_.size());
@@ -160,6 +162,7 @@ void Simulator::detectContacts() {
   }
   flush();
   findBorderContacts(reuse);
+  flushReused();
   if (contacts.size() > unchainedContacts) chainFirstPairs(start);
   contactsComplete_ = fromEmpty;
   previousValid_ = false;  // used: the next detection compares against this one
@@ -539,22 +542,6 @@ inline void Simulator::countContact(std::uint32_t bodyA, std::uint32_t bodyB) {
   countedCount_ += std::size_t{count[bodyB]++ == 0};
 }
 
-// Inline: every pair reused is counted, with its @p n contacts.
-inline void Simulator::countPairContacts(std::uint32_t bodyA, std::uint32_t bodyB,
-                                         std::uint32_t n) {
-  // As countContact() n times (bodies listed in the same order), without a branch.
-  std::uint32_t* const count = objectContactCursor_.data();
-  std::uint32_t* const counted = countedObjects_.data();
-  std::size_t listed = countedCount_;
-  counted[listed] = bodyA;
-  listed += std::size_t{count[bodyA] == 0};
-  count[bodyA] += n;
-  counted[listed] = bodyB;
-  listed += std::size_t{count[bodyB] == 0};
-  count[bodyB] += n;
-  countedCount_ = listed;
-}
-
 void Simulator::chainFirstPairs(std::uint32_t start) {
   // The pairs chainPair() left out (positions start to unchainedContacts - 1), put at the
   // heads of their chains last first: the chains are then as if each pair had been chained
@@ -587,25 +574,45 @@ void Simulator::resetCounts() {
 // Inline at both sites (measured: GCC kept the detection loop's a call, 25 instructions a
 // step more in the arena).
 THYRIX_ALWAYS_INLINE void Simulator::reusePair(std::uint32_t shapeA, std::uint32_t shapeB) {
-  // Neither shape moved and its filters did not change: the contacts are last detection's,
-  // copied as they were but for the force (the solver's output, not detection's). A pair's
-  // contacts have the same bodies: counted once, with the pair's count.
+  // Neither shape moved and its filters did not change: the contacts are last detection's.
+  // Pairs at rest come in the last step's order, so their contacts follow one another there:
+  // they are appended as a run, when another contact is to follow them (flushReused()).
   const PreviousRange range = previousContactsOf(shapeA, shapeB);
-  const std::uint32_t count = range.end - range.begin;
-  if (count == 0) return;  // in reach, not touching
+  if (range.begin == range.end) return;  // in reach, not touching
+  if (range.begin != reusedEnd_) {
+    flushReused();
+    reusedBegin_ = range.begin;
+  }
+  reusedEnd_ = range.end;
+}
+
+// Inline: before every other batch of contacts appended (most find no run).
+inline void Simulator::flushReused() {
+  if (reusedBegin_ != reusedEnd_) appendReused();
+}
+
+void Simulator::appendReused() {
+  // The run's contacts as they were but for the force (the solver's output, not detection's),
+  // counted and noted as if appended one by one.
+  const std::uint32_t begin = reusedBegin_;
+  const std::uint32_t count = reusedEnd_ - begin;
+  reusedBegin_ = reusedEnd_;
   std::vector<GlobalContactInfo>& items = contacts.items_;
   const auto position = static_cast<std::uint32_t>(items.size());
   ContactPair* const notes = notesFor(std::size_t{position} + count);
-  const GlobalContactInfo* const from = previousContacts_.data() + range.begin;
-  const std::uint64_t key = pairKey(shapeA, shapeB);
+  const GlobalContactInfo* const from = previousContacts_.data() + begin;
+  items.insert(items.end(), from, from + count);
+  GlobalContactInfo* const to = items.data() + position;
+  const ContactPair* const pairs = previousPairs_.data() + begin;
   for (std::uint32_t i = 0; i < count; ++i) {
-    GlobalContactInfo contact = from[i];
-    contact.force = 0;
-    items.push_back(contact);
+    to[i].force = 0;
+    countContact(to[i].bodyA, to[i].bodyB);
+    const std::uint64_t key = pairs[i].key;
     notes[position + i] = {key, noPair};
+    // (The run holds whole pairs: its first contact begins one.)
+    if (position + i >= unchainedContacts && (i == 0 || key != pairs[i - 1].key))
+      chainPair(notes, position + i, static_cast<std::uint32_t>(key >> 32));
   }
-  countPairContacts(from->bodyA, from->bodyB, count);
-  if (position >= unchainedContacts) chainPair(notes, position, shapeA);
   statistics_.reusedContacts += count;
 }
 
@@ -622,6 +629,7 @@ inline void Simulator::appendContact(std::uint32_t shapeA, std::uint32_t shapeB,
 // Inline: the narrow phase calls it for every pair in reach.
 inline void Simulator::appendContacts(std::uint32_t shapeA, std::uint32_t shapeB,
                                       const Manifold& manifold) {
+  flushReused();  // (the reused contacts before it come first)
   const auto position = static_cast<std::uint32_t>(contacts.items_.size());
   const auto count = static_cast<std::uint32_t>(manifold.count);
   ContactPair* const notes = notesFor(std::size_t{position} + count);
@@ -653,6 +661,7 @@ inline bool Simulator::circlesInReach(std::uint32_t shapeA, std::uint32_t shapeB
 void Simulator::addCirclePairs(std::span<const CirclePair> pairs) {
   // collideCircles' one point, stored without a Manifold in between (zeroed, then read back
   // in a loop over its points).
+  flushReused();  // (the reused contacts before them come first)
   auto position = static_cast<std::uint32_t>(contacts.items_.size());
   ContactPair* const notes = notesFor(position + pairs.size());
   const auto add = [&](auto longList) {
