@@ -331,6 +331,75 @@ TEST(BaraffSolver, RedundantContactsOfAFlatCapsuleGiveTheUniqueVelocity) {
   }
 }
 
+/// A random island of @p rows rows between three movable bodies (0, 1, 2) and a fixed one (3),
+/// with velocities, arms and targets of both signs: rows that hold, that are driven, that
+/// block or release one another.
+Problem randomSmallIsland(MTRandom& random, std::size_t rows) {
+  Problem p;
+  const auto uniform = [&](double a, double b) { return static_cast<real>(random.uniform(a, b)); };
+  for (int i = 0; i < 3; ++i)
+    p.bodies.push_back(
+        {{uniform(-1, 1), uniform(-1, 1)}, uniform(-1, 1), uniform(0.2, 2), uniform(0.2, 5)});
+  p.bodies.push_back({});
+  for (std::size_t k = 0; k < rows; ++k) {
+    ContactConstraint row;
+    row.a = static_cast<std::uint32_t>(random.uniform(0, 4)) % 4;
+    row.b = (row.a + 1 + static_cast<std::uint32_t>(random.uniform(0, 3)) % 3) % 4;
+    const real angle = uniform(0, 6.283);
+    row.normal = {std::cos(angle), std::sin(angle)};
+    row.armA = uniform(-0.5, 0.5);
+    row.armB = uniform(-0.5, 0.5);
+    row.target = uniform(-1, 1);
+    p.rows.push_back(row);
+  }
+  p.all.resize(rows);
+  std::iota(p.all.begin(), p.all.end(), 0u);
+  return p;
+}
+
+TEST(BaraffSolver, IslandsOfOneAndTwoRowsGiveThePivotingsBitsAndTheReference) {
+  // solve() takes islands of one or two rows in closed form: the same operations as pivot(),
+  // the same bits. pivot() itself runs on the same rows with a third one beside them that holds
+  // and touches neither (two bodies of its own, a smaller coupling: the same tolerance), which
+  // changes none of its steps. The active-set enumeration is the independent reference.
+  MTRandom random(7);
+  int solved = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const std::size_t rows = 1 + static_cast<std::size_t>(trial % 2);
+    Problem closed = randomSmallIsland(random, rows);
+    Problem start = closed;
+    Problem pivoted = closed;
+    pivoted.bodies.push_back({{0, 0}, 0, real(0.01), real(0.01)});
+    pivoted.bodies.push_back({{0, 0}, 0, real(0.01), real(0.01)});
+    ContactConstraint apart;
+    apart.a = 4;
+    apart.b = 5;
+    apart.normal = {1, 0};
+    apart.target = -1;  // a gap closing at most 1 m/s, the bodies at rest: it holds
+    pivoted.rows.push_back(apart);
+    pivoted.all.push_back(static_cast<std::uint32_t>(rows));
+
+    BaraffSolver baraff;
+    const bool closedSolved = baraff.solve(closed.all, closed.rows, closed.bodies);
+    const int closedPivots = baraff.lastPivotCount();
+    const bool pivotSolved = baraff.solve(pivoted.all, pivoted.rows, pivoted.bodies);
+    ASSERT_EQ(closedSolved, pivotSolved) << "trial " << trial;
+    EXPECT_EQ(closedPivots, baraff.lastPivotCount()) << "trial " << trial;
+    if (!closedSolved) continue;
+    ++solved;
+    EXPECT_EQ(pivoted.rows[rows].force, 0);
+    for (std::size_t k = 0; k < rows; ++k)
+      EXPECT_EQ(closed.rows[k].force, pivoted.rows[k].force) << "trial " << trial << " row " << k;
+    for (std::size_t i = 0; i < closed.bodies.size(); ++i) {
+      EXPECT_EQ(closed.bodies[i].v, pivoted.bodies[i].v) << "trial " << trial << " body " << i;
+      EXPECT_EQ(closed.bodies[i].omega, pivoted.bodies[i].omega) << "trial " << trial;
+    }
+    ASSERT_TRUE(referenceSolve(start)) << "trial " << trial;
+    expectSameVelocities(closed, start, test::isFloat ? real(1e-4) : real(1e-9));
+  }
+  EXPECT_GT(solved, 3000);
+}
+
 TEST(BaraffSolver, ContradictoryTargetsFallBackWithoutExplosion) {
   // A circle squeezed between two borders closer than its diameter: both contacts demand
   // separation, which no velocity can give. The step must stay finite and bounded.
