@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
 namespace thyrix {
 namespace {
 
@@ -92,6 +94,37 @@ TEST(TactileSensors, ZeroWithoutContactAndAfterContactEnds) {
   scene.circle->r.y = 2;  // lifted well clear
   scene.press(0);
   for (const real a : scene.circle->tactileActivations()) EXPECT_EQ(a, 0);
+}
+
+TEST(TactileSensors, EveryStepStartsFromZeroWhateverTheLastOneFelt) {
+  // clear() and finish() skip their loops while nothing was added since the last clear():
+  // the activations must read as if they had run.
+  TactileSensors sensors = TactileSensors::circle(4, 0, 10);
+  const auto expect = [&](std::array<real, 4> wanted) {
+    for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(sensors.activations()[k], wanted[k]) << k;
+  };
+  sensors.finish();  // a first step that felt nothing
+  expect({0, 0, 0, 0});
+  sensors.clear();
+  sensors.add(1, 5);
+  sensors.add(1, 1);
+  sensors.add(3, 25);
+  sensors.finish();
+  expect({0, real(0.6), 0, 1});
+  sensors.clear();  // nothing touches the next step
+  sensors.finish();
+  expect({0, 0, 0, 0});
+  sensors.clear();
+  sensors.finish();
+  expect({0, 0, 0, 0});
+  sensors.clear();  // a contact without force
+  sensors.add(2, 0);
+  sensors.finish();
+  expect({0, 0, 0, 0});
+  sensors.clear();
+  sensors.add(0, 2);
+  sensors.finish();
+  expect({real(0.2), 0, 0, 0});
 }
 
 TEST(TactileSensors, CappedRectangleNumberingIsCounterClockwiseFromLowerLeft) {
