@@ -39,7 +39,9 @@ bool solveOne(ContactConstraint& row, std::span<SolverBody> bodies, int& pivots)
 /// pivot() itself. Most islands of a small world that are not one contact are two.
 bool solveTwo(ContactConstraint& row0, ContactConstraint& row1, std::span<SolverBody> bodies,
               int& pivots) {
-  // buildMatrix(): A (symmetric), its scale; then the slacks.
+  // buildMatrix(): A (symmetric), its scale; then the slacks. The forces move as pivot()'s do,
+  // by step * direction even where the direction is 0 or 1: a NaN or infinite step must leave
+  // the same values (0 * inf is NaN), which the forces' final clamp alone does not make plain.
   const real a00 = rigidCoupling(row0, row0, bodies);
   const real a01 = rigidCoupling(row0, row1, bodies);
   const real a11 = rigidCoupling(row1, row1, bodies);
