@@ -28,7 +28,9 @@ class World {
   ///
   /// The object is validated first (sizes, masses, finite position and angle); on failure an
   /// InvalidArgument names the field and the world is left unchanged. An agent's sub-bodies
-  /// (PhysicalObject::addSubBody) are registered right after it, all or nothing.
+  /// (PhysicalObject::addSubBody) are registered right after it, all or nothing. Register
+  /// between steps, not from an object's hooks during one: the step walks `objects` as it was
+  /// when the step began.
   template <std::derived_from<PhysicalObject> T>
   T& registerObject(std::unique_ptr<T> object) {
     T* added = object.get();
