@@ -102,6 +102,31 @@ VisualSensor::VisualSensor(const PhysicalObject& body, Vector2 localPosition, re
     bounds_[static_cast<std::size_t>(i)] = -halfField_ + static_cast<real>(i) * pixelAngle_;
 }
 
+bool VisualSensor::partsChanged() const {
+  for (const auto& [object, parts] : partCounts_)
+    if (object->primitives().size() != parts) return true;
+  return false;
+}
+
+void VisualSensor::collectPrimitives(const ObjectList& objects) {
+  primitives_.clear();
+  partCounts_.clear();
+  for (const PhysicalObject& object : objects) {
+    const auto parts = object.primitives();
+    // A circle or capsule is its own single primitive for good; any other object (a composed
+    // body) may gain parts: its count is checked on each update().
+    if (!(parts.size() == 1 && parts[0] == &object))
+      partCounts_.emplace_back(&object, parts.size());
+    for (const Primitive* primitive : parts)
+      if (primitive->shapeType() != ShapeType::HalfPlane) primitives_.push_back(primitive);
+  }
+  // At most two pieces of arc a primitive.
+  coverage_.reserve(2 * primitives_.size());
+  candidates_.resize(primitives_.size());
+  objectsSeen_ = &objects;
+  objectsSized_ = objects.size();
+}
+
 real VisualSensor::viewDirection() const { return wrapAngle(body_->alpha + localDirection_); }
 
 std::pair<real, real> VisualSensor::pixelBounds(int i) const {
@@ -123,13 +148,8 @@ void VisualSensor::update(const ObjectList& objects) {
   const Vector2 leftEdge = rotate(view, cosHalfField_, sinHalfField_);
 
   coverage_.clear();
-  if (objects.size() != objectsSized_) {  // the world has grown: at most two pieces a primitive
-    std::size_t primitives = 0;
-    for (const PhysicalObject& object : objects) primitives += object.primitives().size();
-    coverage_.reserve(2 * primitives);
-    candidates_.resize(primitives);
-    objectsSized_ = objects.size();
-  }
+  if (&objects != objectsSeen_ || objects.size() != objectsSized_ || partsChanged())
+    collectPrimitives(objects);
   const PhysicalObject* const self = body_;
   const real halfField = halfField_;
   const bool convexField = halfField <= pi<real> / 2;
@@ -138,70 +158,56 @@ void VisualSensor::update(const ObjectList& objects) {
   // for rounding) its wrapped image never reaches the field, and a disk's arc needs no split.
   const bool narrow = halfField < real(0.45) * pi<real>;
 
-  // Pass 1, the culling of every primitive, calls no function: the loop keeps the eye, the
-  // view and the edges in registers (a call clobbers every floating-point register). The
-  // primitives that may be seen are written to candidates_, sized when the world grows; if a
-  // composed body gained parts since, the pass counts them, and runs again once it has room.
-  // In a narrow field (a compile-time variant, not a test per object) a circle is culled by
+  // Pass 1, the culling of every circle and capsule, calls no function: the loop keeps the eye,
+  // the view and the edges in registers (a call clobbers every floating-point register). The
+  // primitives that may be seen are written to candidates_ (one slot per primitive).
+  // In a narrow field (a compile-time variant, not a test per primitive) a circle is culled by
   // the two edges alone: those it keeps that diskOutside() would cull lie entirely behind the
   // eye (dot(view, offset) < -radius), their arcs more than pi / 2 from the view, so more than
   // 0.05 pi outside the field: clipping empties them, and the pixels are the same (but one of
   // them must not be taken for a disk containing the eye).
   std::size_t count = 0;
   const auto cull = [&](auto narrowField) {
-    count = 0;
     Candidate* const out = candidates_.data();
-    const std::size_t room = candidates_.size();
-    for (const PhysicalObject& object : objects) {
-      for (const Primitive* primitive : object.primitives()) {
-        // Circles first, with one test; borders are not seen; a capsule is culled by its
-        // bounding disk here, by its end disks in pass 2.
-        const ShapeType type = primitive->shapeType();
-        real radius = primitive->radius();
-        if (type != ShapeType::Circle) {
-          if (type == ShapeType::HalfPlane) continue;
-          radius += primitive->halfLength();
-        }
-        const Vector2 offset = primitive->r - eye;
-        if constexpr (decltype(narrowField)::value) {
-          // Clockwise of the right edge's line or counter-clockwise of the left one's, by more
-          // than the radius (cross(offset, rightEdge) is -cross(rightEdge, offset) exactly).
-          if (cross(offset, rightEdge) > radius || cross(leftEdge, offset) > radius) continue;
-          // A capsule keeps the general test (pass 2 works from its end disks).
-          if (type != ShapeType::Circle && dot(view, offset) < -radius) continue;
-        } else {
-          if (diskOutside(offset, radius, view, rightEdge, leftEdge, convexField)) continue;
-        }
-        // The body's own primitives usually contain the eye and pass, so they are excluded
-        // after the test.
-        if (&primitive->owner() == self) continue;
-        // A disk that contains (or touches) the eye covers every pixel, whatever else is seen
-        // (diskExtent()'s test, with the same arithmetic): the rest of the pass is not needed,
-        // and pass 2 sees no such disk.
-        real distanceSquared = 0;
-        if (type == ShapeType::Circle) {
-          distanceSquared = offset.lengthSquared();
-          if (distanceSquared <= radius * radius) {
-            // Rounding can put a disk that touches the eye entirely behind it, where
-            // diskOutside() culls it: so does the narrow variant.
-            if constexpr (decltype(narrowField)::value)
-              if (dot(view, offset) < -radius) continue;
-            return false;
-          }
-        }
-        if (count < room) out[count] = Candidate{primitive, offset, distanceSquared};
-        ++count;
+    for (const Primitive* primitive : primitives_) {
+      // Circles first, with one test; a capsule is culled by its bounding disk here, by its end
+      // disks in pass 2.
+      const ShapeType type = primitive->shapeType();
+      real radius = primitive->radius();
+      if (type != ShapeType::Circle) radius += primitive->halfLength();
+      const Vector2 offset = primitive->r - eye;
+      if constexpr (decltype(narrowField)::value) {
+        // Clockwise of the right edge's line or counter-clockwise of the left one's, by more
+        // than the radius (cross(offset, rightEdge) is -cross(rightEdge, offset) exactly).
+        if (cross(offset, rightEdge) > radius || cross(leftEdge, offset) > radius) continue;
+        // A capsule keeps the general test (pass 2 works from its end disks).
+        if (type != ShapeType::Circle && dot(view, offset) < -radius) continue;
+      } else {
+        if (diskOutside(offset, radius, view, rightEdge, leftEdge, convexField)) continue;
       }
+      // The body's own primitives usually contain the eye and pass, so they are excluded after
+      // the test (here, not in collectPrimitives(): a primitive may be attached to another
+      // owner at any time).
+      if (&primitive->owner() == self) continue;
+      // A disk that contains (or touches) the eye covers every pixel, whatever else is seen
+      // (diskExtent()'s test, with the same arithmetic): the rest of the pass is not needed,
+      // and pass 2 sees no such disk.
+      real distanceSquared = 0;
+      if (type == ShapeType::Circle) {
+        distanceSquared = offset.lengthSquared();
+        if (distanceSquared <= radius * radius) {
+          // Rounding can put a disk that touches the eye entirely behind it, where
+          // diskOutside() culls it: so does the narrow variant.
+          if constexpr (decltype(narrowField)::value)
+            if (dot(view, offset) < -radius) continue;
+          return false;
+        }
+      }
+      out[count++] = Candidate{primitive, offset, distanceSquared};
     }
     return true;
   };
-  const auto cullAll = [&] { return narrow ? cull(std::true_type{}) : cull(std::false_type{}); };
-  bool eyeOutside = cullAll();
-  if (eyeOutside && count > candidates_.size()) {
-    candidates_.resize(count);
-    eyeOutside = cullAll();
-  }
-  if (!eyeOutside) {
+  if (!(narrow ? cull(std::true_type{}) : cull(std::false_type{}))) {
     std::fill(activations_.begin(), activations_.end(), real(1));
     return;
   }

@@ -28,11 +28,11 @@ namespace thyrix {
 /// contains or touches the eye covers every pixel.
 ///
 /// The sensor reads the primitives' world pose (`r`, `alpha`) as it is when update() runs; for
-/// the parts of a composed body the simulator keeps it current. update() sizes its buffers for
-/// the primitives (two intervals and one culling slot each) when the number of objects changes,
-/// so it allocates nothing on later calls with the same objects (nor after a composed body
-/// gained parts, once it has grown for them). The sensor refers to its body, which must outlive
-/// it.
+/// the parts of a composed body the simulator keeps it current. update() lists the circles and
+/// capsules of the objects (and sizes its buffers for them: two intervals and one culling slot
+/// each) when it is given another object list, more objects, or a composed body among them has
+/// gained parts, so it allocates nothing on later calls with the same objects. The sensor
+/// refers to its body, which must outlive it, and to the primitives of the objects it last saw.
 class VisualSensor {
  public:
   /// @param body the body the eye is attached to (it is not seen)
@@ -103,7 +103,18 @@ class VisualSensor {
   std::vector<real> bounds_;
   AngularCoverage coverage_;
   std::vector<Candidate> candidates_;  // update()'s culled primitives, one slot per primitive
-  std::size_t objectsSized_ = 0;       // the number of objects coverage_ was last sized for
+  // The circles and capsules of the objects update() last saw (borders are never seen), so the
+  // culling walks one flat list instead of every object's primitives: collected again when the
+  // objects are others, more, or a composed body among them has gained parts.
+  std::vector<const Primitive*> primitives_;
+  std::vector<std::pair<const PhysicalObject*, std::size_t>> partCounts_;  // composed bodies
+  const ObjectList* objectsSeen_ = nullptr;
+  std::size_t objectsSized_ = 0;
+
+  /// True if a composed body has gained parts since collectPrimitives().
+  [[nodiscard]] bool partsChanged() const;
+  /// Collects the circles and capsules of @p objects into primitives_ and sizes the buffers.
+  void collectPrimitives(const ObjectList& objects);
 };
 
 }  // namespace thyrix

@@ -213,6 +213,27 @@ TEST_F(VisualSensorTest, ComposedBodies) {
   expectActivations(sensor, {0, 0, real(0.5), 1, 0, 0});
 }
 
+TEST_F(VisualSensorTest, SeesPartsAddedLaterAndAnotherObjectList) {
+  // The sensor lists the primitives it may see: a part added to a composed body after an
+  // update(), or another world's objects, are seen on the next one.
+  Simulator scene;  // without the fixture's body, which surrounds the origin
+  Circle& own = scene.registerObject(std::make_unique<Circle>(real(0.5), real(1)));
+  auto other = std::make_unique<ComposedPhysicalObject>();
+  other->add(std::make_unique<Circle>(1, real(1)), polar(2, 0));
+  ComposedPhysicalObject& otherBody = scene.registerObject(std::move(other));
+  VisualSensor sensor(own, {}, 0, 6, kPi / 3);
+  sensor.update(scene.objects);
+  expectActivations(sensor, {0, 0, real(0.5), real(0.5), 0, 0});
+  otherBody.add(std::make_unique<Circle>(1, real(1)), polar(2, kPi / 6));
+  sensor.update(scene.objects);
+  expectActivations(sensor, {0, 0, real(0.5), 1, 0, 0});
+  Simulator elsewhere;  // as many objects: two circles behind the eye, across +-pi
+  for (int i = 0; i < 2; ++i)
+    elsewhere.registerObject(std::make_unique<Circle>(1, real(1))).r = polar(2, kPi);
+  sensor.update(elsewhere.objects);
+  expectActivations(sensor, {real(0.5), 0, 0, 0, 0, real(0.5)});
+}
+
 TEST_F(VisualSensorTest, BordersAreNotSeen) {
   world.registerObject(std::make_unique<Border>(Vector2{2, 0}, Vector2{-1, 0}));
   world.registerObject(std::make_unique<Border>(Vector2{0, -2}, Vector2{0, 1}));
