@@ -117,8 +117,13 @@ void VisualSensor::collectPrimitives(const ObjectList& objects) {
     // body) may gain parts: its count is checked on each update().
     if (!(parts.size() == 1 && parts[0] == &object))
       partCounts_.emplace_back(&object, parts.size());
-    for (const Primitive* primitive : parts)
-      if (primitive->shapeType() != ShapeType::HalfPlane) primitives_.push_back(primitive);
+  }
+  // The circles first, then the capsules, so the culling knows each one's type.
+  for (const ShapeType type : {ShapeType::Circle, ShapeType::Capsule}) {
+    for (const PhysicalObject& object : objects)
+      for (const Primitive* primitive : object.primitives())
+        if (primitive->shapeType() == type) primitives_.push_back(primitive);
+    if (type == ShapeType::Circle) circleCount_ = primitives_.size();
   }
   // At most two pieces of arc a primitive.
   coverage_.reserve(2 * primitives_.size());
@@ -166,13 +171,13 @@ void VisualSensor::update(const ObjectList& objects) {
   // eye (dot(view, offset) < -radius), their arcs more than pi / 2 from the view, so more than
   // 0.05 pi outside the field: clipping empties them, and the pixels are the same (but one of
   // them must not be taken for a disk containing the eye).
+  // The circles and the capsules are culled by two instances of one loop (no test of the type).
   std::size_t count = 0;
-  const auto cull = [&](auto narrowField) {
+  const auto cull = [&](auto narrowField, auto circles, std::span<const Primitive* const> list) {
+    constexpr ShapeType type = decltype(circles)::value ? ShapeType::Circle : ShapeType::Capsule;
     Candidate* const out = candidates_.data();
-    for (const Primitive* primitive : primitives_) {
-      // Circles first, with one test; a capsule is culled by its bounding disk here, by its end
-      // disks in pass 2.
-      const ShapeType type = primitive->shapeType();
+    for (const Primitive* primitive : list) {
+      // A capsule is culled by its bounding disk here, by its end disks in pass 2.
       real radius = primitive->radius();
       if (type != ShapeType::Circle) radius += primitive->halfLength();
       const Vector2 offset = primitive->r - eye;
@@ -207,7 +212,12 @@ void VisualSensor::update(const ObjectList& objects) {
     }
     return true;
   };
-  if (!(narrow ? cull(std::true_type{}) : cull(std::false_type{}))) {
+  const auto cullAll = [&](auto narrowField) {
+    const std::span<const Primitive* const> all = primitives_;
+    return cull(narrowField, std::true_type{}, all.first(circleCount_)) &&
+           cull(narrowField, std::false_type{}, all.subspan(circleCount_));
+  };
+  if (!(narrow ? cullAll(std::true_type{}) : cullAll(std::false_type{}))) {
     std::fill(activations_.begin(), activations_.end(), real(1));
     return;
   }

@@ -106,7 +106,8 @@ class VisualSensor {
   // The circles and capsules of the objects update() last saw (borders are never seen), so the
   // culling walks one flat list instead of every object's primitives: collected again when the
   // objects are others, more, or a composed body among them has gained parts.
-  std::vector<const Primitive*> primitives_;
+  std::vector<const Primitive*> primitives_;  // the circles, then the capsules
+  std::size_t circleCount_ = 0;
   std::vector<std::pair<const PhysicalObject*, std::size_t>> partCounts_;  // composed bodies
   const ObjectList* objectsSeen_ = nullptr;
   std::size_t objectsSized_ = 0;
