@@ -212,10 +212,12 @@ void VisualSensor::update(const ObjectList& objects) {
     }
     return true;
   };
+  std::size_t circleCandidates = 0;  // candidates_[0, circleCandidates) are circles
   const auto cullAll = [&](auto narrowField) {
     const std::span<const Primitive* const> all = primitives_;
-    return cull(narrowField, std::true_type{}, all.first(circleCount_)) &&
-           cull(narrowField, std::false_type{}, all.subspan(circleCount_));
+    if (!cull(narrowField, std::true_type{}, all.first(circleCount_))) return false;
+    circleCandidates = count;
+    return cull(narrowField, std::false_type{}, all.subspan(circleCount_));
   };
   if (!(narrow ? cullAll(std::true_type{}) : cullAll(std::false_type{}))) {
     std::fill(activations_.begin(), activations_.end(), real(1));
@@ -233,10 +235,11 @@ void VisualSensor::update(const ObjectList& objects) {
     return true;
   };
   // Adds a candidate's arc; false when the eye is inside (or touching) it: every pixel sees it.
-  const auto addArc = [&](const Candidate& candidate, auto narrowField) {
+  // The circle candidates come first (pass 1 culls the circles first): @p circle is known.
+  const auto addArc = [&](const Candidate& candidate, auto narrowField, auto circle) {
     const Primitive* const primitive = candidate.primitive;
     const real radius = primitive->radius();
-    if (primitive->shapeType() == ShapeType::Circle) {
+    if constexpr (decltype(circle)::value) {
       if constexpr (!decltype(narrowField)::value)
         return addExtent(diskExtent(eye, view, primitive->r, radius));
       // diskExtent() and splitAtPi() inlined with the same arithmetic, bit for bit: in a
@@ -249,19 +252,22 @@ void VisualSensor::update(const ObjectList& objects) {
       coverage_.add(AngularInterval{std::max(direction - half, -halfField),
                                     std::min(direction + half, halfField)});
       return true;
+    } else {
+      const real halfLength = primitive->halfLength();  // a capsule
+      const Vector2 axis{halfLength * std::cos(primitive->alpha),
+                         halfLength * std::sin(primitive->alpha)};
+      const Vector2 p0 = primitive->r - axis;
+      const Vector2 p1 = primitive->r + axis;
+      if (capsuleOutside(p0 - eye, p1 - eye, radius, view, rightEdge, leftEdge, convexField))
+        return true;
+      return addExtent(capsuleExtent(eye, view, p0, p1, radius));
     }
-    const real halfLength = primitive->halfLength();  // a capsule
-    const Vector2 axis{halfLength * std::cos(primitive->alpha),
-                       halfLength * std::sin(primitive->alpha)};
-    const Vector2 p0 = primitive->r - axis;
-    const Vector2 p1 = primitive->r + axis;
-    if (capsuleOutside(p0 - eye, p1 - eye, radius, view, rightEdge, leftEdge, convexField))
-      return true;
-    return addExtent(capsuleExtent(eye, view, p0, p1, radius));
   };
   const auto addArcs = [&](auto narrowField) {
-    for (std::size_t k = 0; k < count; ++k)
-      if (!addArc(candidates_[k], narrowField)) return false;
+    for (std::size_t k = 0; k < circleCandidates; ++k)
+      if (!addArc(candidates_[k], narrowField, std::true_type{})) return false;
+    for (std::size_t k = circleCandidates; k < count; ++k)
+      if (!addArc(candidates_[k], narrowField, std::false_type{})) return false;
     return true;
   };
   if (!(narrow ? addArcs(std::true_type{}) : addArcs(std::false_type{}))) {
