@@ -120,7 +120,7 @@ void AngularCoverage::merge() {
       *++end = *i;
     }
   }
-  intervals_.resize(static_cast<std::size_t>(end - first) + 1);
+  intervals_.erase(intervals_.begin() + (end - first) + 1, intervals_.end());  // shrinks only
 }
 
 real AngularCoverage::covered(real begin, real end) const {
