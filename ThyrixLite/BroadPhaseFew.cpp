@@ -17,11 +17,12 @@ namespace {
 
 static_assert(BroadPhase::smallCount <= 64, "few boxes keep their overlaps in 64-bit masks");
 
-#if defined(__SSE2__)
 /// Bits 0 to count - 1.
 std::uint64_t lowBits(std::uint32_t count) {
   return count >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
 }
+
+#if defined(__SSE2__)
 
 /// The SSE2 instructions of one precision: two doubles or four floats to a register.
 template <class Real>
@@ -47,103 +48,114 @@ struct Sse<float> {
   static int signs(Vector a) { return _mm_movemask_ps(a); }
 };
 
-// Bit j set when box j of @p count overlaps the box of corners (@p lx, @p ly), (@p ux, @p uy),
-// a register of boxes per instruction (a comparison with NaN is false, as in C++). Bits from
-// count on are garbage (padding): the caller masks them.
-std::uint64_t overlapBits(real lx, real ux, real ly, real uy, const real* lowerX,
-                          const real* upperX, const real* lowerY, const real* upperY,
-                          std::uint32_t count) {
+// For each box m of @p moved: bit j of @p rows[m] set when box j of @p count (in @p soa)
+// overlaps box m of @p boxes, a register of boxes per instruction (a comparison with NaN is
+// false, as in C++). Bits from count on are garbage (padding): the caller masks them.
+void overlapRowsSse(const BoundingBox* boxes, std::uint64_t moved, const BoxColumns& soa,
+                    std::uint32_t count, std::uint64_t* rows) {
   using S = Sse<real>;
-  const auto boxLowerX = S::broadcast(lx);
-  const auto boxUpperX = S::broadcast(ux);
-  const auto boxLowerY = S::broadcast(ly);
-  const auto boxUpperY = S::broadcast(uy);
-  std::uint64_t row = 0;
-  for (std::uint32_t j = 0; j < count; j += S::lanes) {
-    auto hit = S::lessOrEqual(boxLowerX, S::load(upperX + j));
-    hit = S::both(hit, S::lessOrEqual(S::load(lowerX + j), boxUpperX));
-    hit = S::both(hit, S::lessOrEqual(boxLowerY, S::load(upperY + j)));
-    hit = S::both(hit, S::lessOrEqual(S::load(lowerY + j), boxUpperY));
-    row |= static_cast<std::uint64_t>(S::signs(hit)) << j;
+  for (; moved != 0; moved &= moved - 1) {
+    const auto m = static_cast<std::uint32_t>(std::countr_zero(moved));
+    const auto boxLowerX = S::broadcast(boxes[m].lower.x);
+    const auto boxUpperX = S::broadcast(boxes[m].upper.x);
+    const auto boxLowerY = S::broadcast(boxes[m].lower.y);
+    const auto boxUpperY = S::broadcast(boxes[m].upper.y);
+    std::uint64_t row = 0;
+    for (std::uint32_t j = 0; j < count; j += S::lanes) {
+      auto hit = S::lessOrEqual(boxLowerX, S::load(soa.upperX + j));
+      hit = S::both(hit, S::lessOrEqual(S::load(soa.lowerX + j), boxUpperX));
+      hit = S::both(hit, S::lessOrEqual(boxLowerY, S::load(soa.upperY + j)));
+      hit = S::both(hit, S::lessOrEqual(S::load(soa.lowerY + j), boxUpperY));
+      row |= static_cast<std::uint64_t>(S::signs(hit)) << j;
+    }
+    rows[m] = row;
   }
-  return row;
 }
 #endif
 
 #if defined(THYRIX_AVX_DISPATCH)
-// overlapBits in double with AVX, four boxes per instruction, and with AVX-512, eight, their
+// overlapRowsSse in double with AVX, four boxes per instruction, and with AVX-512, eight, their
 // four comparisons chained in a mask register. Comparisons only, ordered (false with NaN, as
 // in C++; a <= b written b >= a where b is loaded, so that the load is the comparison's
 // operand): the same bits. (Templates: a float build never instantiates them.)
 template <class Real>
-[[gnu::target("avx")]] std::uint64_t overlapBitsAvx(Real lx, Real ux, Real ly, Real uy,
-                                                    const Real* lowerX, const Real* upperX,
-                                                    const Real* lowerY, const Real* upperY,
-                                                    std::uint32_t count) {
-  const __m256d boxLowerX = _mm256_set1_pd(lx);
-  const __m256d boxUpperX = _mm256_set1_pd(ux);
-  const __m256d boxLowerY = _mm256_set1_pd(ly);
-  const __m256d boxUpperY = _mm256_set1_pd(uy);
-  std::uint64_t row = 0;
-  for (std::size_t j = 0; j < count; j += 4) {
-    __m256d hit = _mm256_cmp_pd(boxLowerX, _mm256_loadu_pd(upperX + j), _CMP_LE_OQ);
-    hit = _mm256_and_pd(hit, _mm256_cmp_pd(boxUpperX, _mm256_loadu_pd(lowerX + j), _CMP_GE_OQ));
-    hit = _mm256_and_pd(hit, _mm256_cmp_pd(boxLowerY, _mm256_loadu_pd(upperY + j), _CMP_LE_OQ));
-    hit = _mm256_and_pd(hit, _mm256_cmp_pd(boxUpperY, _mm256_loadu_pd(lowerY + j), _CMP_GE_OQ));
-    row |= static_cast<std::uint64_t>(_mm256_movemask_pd(hit)) << j;
+[[gnu::target("avx")]] void overlapRowsAvx(const BoundingBox* boxes, std::uint64_t moved,
+                                           const Real* lowerX, const Real* upperX,
+                                           const Real* lowerY, const Real* upperY,
+                                           std::uint32_t count, std::uint64_t* rows) {
+  for (; moved != 0; moved &= moved - 1) {
+    const auto m = static_cast<std::uint32_t>(std::countr_zero(moved));
+    const __m256d boxLowerX = _mm256_set1_pd(Real{boxes[m].lower.x});
+    const __m256d boxUpperX = _mm256_set1_pd(Real{boxes[m].upper.x});
+    const __m256d boxLowerY = _mm256_set1_pd(Real{boxes[m].lower.y});
+    const __m256d boxUpperY = _mm256_set1_pd(Real{boxes[m].upper.y});
+    std::uint64_t row = 0;
+    for (std::size_t j = 0; j < count; j += 4) {
+      __m256d hit = _mm256_cmp_pd(boxLowerX, _mm256_loadu_pd(upperX + j), _CMP_LE_OQ);
+      hit = _mm256_and_pd(hit, _mm256_cmp_pd(boxUpperX, _mm256_loadu_pd(lowerX + j), _CMP_GE_OQ));
+      hit = _mm256_and_pd(hit, _mm256_cmp_pd(boxLowerY, _mm256_loadu_pd(upperY + j), _CMP_LE_OQ));
+      hit = _mm256_and_pd(hit, _mm256_cmp_pd(boxUpperY, _mm256_loadu_pd(lowerY + j), _CMP_GE_OQ));
+      row |= static_cast<std::uint64_t>(_mm256_movemask_pd(hit)) << j;
+    }
+    rows[m] = row;
   }
-  return row;
 }
 
 template <class Real>
-[[gnu::target("avx512f")]] std::uint64_t overlapBitsAvx512(Real lx, Real ux, Real ly, Real uy,
-                                                           const Real* lowerX, const Real* upperX,
-                                                           const Real* lowerY, const Real* upperY,
-                                                           std::uint32_t count) {
-  const __m512d boxLowerX = _mm512_set1_pd(lx);
-  const __m512d boxUpperX = _mm512_set1_pd(ux);
-  const __m512d boxLowerY = _mm512_set1_pd(ly);
-  const __m512d boxUpperY = _mm512_set1_pd(uy);
-  std::uint64_t row = 0;
-  for (std::size_t j = 0; j < count; j += 8) {
-    __mmask8 hit = _mm512_cmp_pd_mask(boxLowerX, _mm512_loadu_pd(upperX + j), _CMP_LE_OQ);
-    hit = _mm512_mask_cmp_pd_mask(hit, boxUpperX, _mm512_loadu_pd(lowerX + j), _CMP_GE_OQ);
-    hit = _mm512_mask_cmp_pd_mask(hit, boxLowerY, _mm512_loadu_pd(upperY + j), _CMP_LE_OQ);
-    hit = _mm512_mask_cmp_pd_mask(hit, boxUpperY, _mm512_loadu_pd(lowerY + j), _CMP_GE_OQ);
-    row |= static_cast<std::uint64_t>(hit) << j;
+[[gnu::target("avx512f")]] void overlapRowsAvx512(const BoundingBox* boxes, std::uint64_t moved,
+                                                  const Real* lowerX, const Real* upperX,
+                                                  const Real* lowerY, const Real* upperY,
+                                                  std::uint32_t count, std::uint64_t* rows) {
+  for (; moved != 0; moved &= moved - 1) {
+    const auto m = static_cast<std::uint32_t>(std::countr_zero(moved));
+    const __m512d boxLowerX = _mm512_set1_pd(Real{boxes[m].lower.x});
+    const __m512d boxUpperX = _mm512_set1_pd(Real{boxes[m].upper.x});
+    const __m512d boxLowerY = _mm512_set1_pd(Real{boxes[m].lower.y});
+    const __m512d boxUpperY = _mm512_set1_pd(Real{boxes[m].upper.y});
+    std::uint64_t row = 0;
+    for (std::size_t j = 0; j < count; j += 8) {
+      __mmask8 hit = _mm512_cmp_pd_mask(boxLowerX, _mm512_loadu_pd(upperX + j), _CMP_LE_OQ);
+      hit = _mm512_mask_cmp_pd_mask(hit, boxUpperX, _mm512_loadu_pd(lowerX + j), _CMP_GE_OQ);
+      hit = _mm512_mask_cmp_pd_mask(hit, boxLowerY, _mm512_loadu_pd(upperY + j), _CMP_LE_OQ);
+      hit = _mm512_mask_cmp_pd_mask(hit, boxUpperY, _mm512_loadu_pd(lowerY + j), _CMP_GE_OQ);
+      row |= static_cast<std::uint64_t>(hit) << j;
+    }
+    rows[m] = row;
   }
-  return row;
 }
 #endif
 
-/// Bit j set when box j (of @p count, in @p soa) overlaps @p box: the same four comparisons
-/// as BoundingBox::overlaps, on the corners stored by coordinate, several boxes at a time
-/// where the processor allows (the padding of @p soa makes the last vector whole).
-std::uint64_t overlapRow(const BoundingBox& box, const BoxColumns& soa, std::uint32_t count) {
+/// For each box m of @p moved, bit j of @p rows[m] set when box j (of @p count, in @p soa)
+/// overlaps box m of @p boxes: the same four comparisons as BoundingBox::overlaps, on the
+/// corners stored by coordinate, several boxes at a time where the processor allows (the
+/// padding of @p soa makes the last vector whole; its bits are garbage, masked by the caller).
+/// All moved boxes in one call: one dispatch, and the vector code's entry and exit, a step.
+void overlapRows(const BoundingBox* boxes, std::uint64_t moved, const BoxColumns& soa,
+                 std::uint32_t count, std::uint64_t* rows) {
 #if defined(THYRIX_AVX_DISPATCH)
   if constexpr (std::is_same_v<real, double>) {
     if (processorHasAvx512())
-      return overlapBitsAvx512(box.lower.x, box.upper.x, box.lower.y, box.upper.y, soa.lowerX,
-                               soa.upperX, soa.lowerY, soa.upperY, count) &
-             lowBits(count);
+      return overlapRowsAvx512(boxes, moved, soa.lowerX, soa.upperX, soa.lowerY, soa.upperY, count,
+                               rows);
     if (processorHasAvx())
-      return overlapBitsAvx(box.lower.x, box.upper.x, box.lower.y, box.upper.y, soa.lowerX,
-                            soa.upperX, soa.lowerY, soa.upperY, count) &
-             lowBits(count);
+      return overlapRowsAvx(boxes, moved, soa.lowerX, soa.upperX, soa.lowerY, soa.upperY, count,
+                            rows);
   }
 #endif
 #if defined(__SSE2__)
-  return overlapBits(box.lower.x, box.upper.x, box.lower.y, box.upper.y, soa.lowerX, soa.upperX,
-                     soa.lowerY, soa.upperY, count) &
-         lowBits(count);
+  overlapRowsSse(boxes, moved, soa, count, rows);
 #else
-  std::uint64_t row = 0;
-  for (std::uint32_t j = 0; j < count; ++j) {
-    const bool hit = (box.lower.x <= soa.upperX[j]) & (soa.lowerX[j] <= box.upper.x) &
-                     (box.lower.y <= soa.upperY[j]) & (soa.lowerY[j] <= box.upper.y);
-    row |= std::uint64_t{hit} << j;
+  for (; moved != 0; moved &= moved - 1) {
+    const auto m = static_cast<std::uint32_t>(std::countr_zero(moved));
+    const BoundingBox& box = boxes[m];
+    std::uint64_t row = 0;
+    for (std::uint32_t j = 0; j < count; ++j) {
+      const bool hit = (box.lower.x <= soa.upperX[j]) & (soa.lowerX[j] <= box.upper.x) &
+                       (box.lower.y <= soa.upperY[j]) & (soa.lowerY[j] <= box.upper.y);
+      row |= std::uint64_t{hit} << j;
+    }
+    rows[m] = row;
   }
-  return row;
 #endif
 }
 
@@ -176,9 +188,11 @@ void BroadPhase::findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint
   // Only rows that had pairs, moved boxes, and boxes below a moved box that now meets them can
   // change; every other row stays empty.
   std::uint64_t visit = (remembered ? rowsWithPairs_ : 0) | moved;
+  overlapRows(boxes.data(), moved, soa, count, movedRows_.data());
+  const std::uint64_t inBoxes = lowBits(count);
   for (std::uint64_t bits = moved; bits != 0; bits &= bits - 1) {
     const auto m = static_cast<std::uint32_t>(std::countr_zero(bits));
-    movedRows_[m] = overlapRow(boxes[m], soa, count) & ~(std::uint64_t{1} << m);
+    movedRows_[m] &= inBoxes & ~(std::uint64_t{1} << m);
     visit |= movedRows_[m] & ~above(m);
   }
   rowsWithPairs_ = 0;
