@@ -579,6 +579,36 @@ TEST_F(VisualSensorTest, MatchesTheExtentFunctionsBitForBit) {
   EXPECT_GT(partial, compared / 10) << "the trials should cover many pixel ends";
 }
 
+TEST_F(VisualSensorTest, EyesOnBodiesTurnedAlikeMatchTheExtentFunctionsBitForBit) {
+  // update() remembers the cosine and sine of the last body angle it saw (an agent's eyes often
+  // sit on bodies turned alike): two eyes kept from step to step, on bodies turned alike or not,
+  // at +0 and -0 (their sines differ in sign), must still give the definition's bits.
+  scenes::addWalls(world, 10, 10);
+  const auto circles = scenes::addRandomCircles(world, 30, real(0.2), 10, 5);
+  PhysicalObject& left = *circles[0];
+  PhysicalObject& right = *circles[1];
+  VisualSensor leftEye(left, {real(0.1), real(0.05)}, real(0.4), 7, kPi / 12);
+  VisualSensor rightEye(right, {real(0.1), real(-0.05)}, real(-0.4), 7, kPi / 12);
+  MTRandom random(23);
+  const auto uniform = [&random](double low, double high) {
+    return static_cast<real>(random.uniform(low, high));
+  };
+  const real angles[] = {0, -real(0), uniform(-7, 7), uniform(-7, 7)};
+  for (int trial = 0; trial < 300; ++trial) {
+    left.r = {uniform(0.3, 9.7), uniform(0.3, 9.7)};
+    right.r = left.r + Vector2{uniform(-0.6, 0.6), uniform(-0.6, 0.6)};
+    left.alpha = angles[static_cast<std::size_t>(trial) % std::size(angles)];
+    right.alpha = trial % 3 == 0 ? angles[static_cast<std::size_t>(trial / 3) % std::size(angles)]
+                                 : left.alpha;
+    for (VisualSensor* eye : {&leftEye, &rightEye}) {
+      eye->update(world.objects);
+      const std::vector<real> expected = referenceActivations(*eye, world.objects);
+      for (std::size_t i = 0; i < expected.size(); ++i)
+        EXPECT_EQ(eye->activations()[i], expected[i]) << "trial " << trial << " pixel " << i;
+    }
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Validation
 
