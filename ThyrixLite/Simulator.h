@@ -287,6 +287,10 @@ class Simulator : public World {
   void updateComposedShape(std::uint32_t shape, bool changed, bool poseKnown, Vector2& boxMin,
                            Vector2& boxMax);
   void findBorderContacts(bool reuse);
+  /// The pairs of border @p border with the grid shapes @p first + i for each bit i of @p bits
+  /// (shapes in its reach): reused if @p reuse (the border's reach is remembered) and neither
+  /// shape moved, else detected.
+  void addBorderPairs(std::uint32_t border, std::size_t first, std::uint64_t bits, bool reuse);
   /// Border @p k's reach bits over @p words words of shapes: every shape's retested if the
   /// border moved, else the moved shapes'.
   void findBorderReach(std::size_t k, std::size_t words, bool borderMoved);

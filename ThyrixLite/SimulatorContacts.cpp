@@ -401,23 +401,30 @@ void Simulator::findBorderContacts(bool reuse) {
     for (std::size_t k = 0; k < borderShapes_.size(); ++k)
       findBorderReach(k, words, !remembered || shapeMoved_[borderShapes_[k]] != 0);
   }
-  for (std::size_t k = 0; k < borderShapes_.size(); ++k) {
-    const std::uint32_t border = borderShapes_[k];
-    // A pair keeps its contacts if neither the border nor the shape moved.
-    const bool borderMoved = !remembered || shapeMoved_[border] != 0;
-    const std::uint32_t borderBody = shapes_[border].body;
-    for (std::size_t w = 0; w < words; ++w) {
-      for (std::uint64_t bits = borderReach_[k * words + w]; bits != 0; bits &= bits - 1) {
-        const std::uint32_t shape =
-            gridShapes_[64 * w + static_cast<std::size_t>(std::countr_zero(bits))];
-        // (The border is shape A: a half-plane comes first. A pair within one body is always
-        // tested: whether it collides is its object's call.)
-        if (reuse && !borderMoved && shapeMoved_[shape] == 0 && shapes_[shape].body != borderBody)
-          reusePair(border, shape);
-        else
-          addContacts(border, shape);
-      }
-    }
+  // (The words one after another, border by border. A word with no shape in reach, most of a
+  // small world's, is passed over before anything is set up for its pairs.)
+  const std::uint64_t* reach = borderReach_.data();
+  for (const std::uint32_t border : borderShapes_) {
+    for (std::size_t first = 0; first < count; first += 64, ++reach)
+      if (*reach != 0) addBorderPairs(border, first, *reach, reuse && remembered);
+  }
+}
+
+// Out of line: findBorderContacts' loop then keeps few values across its calls.
+THYRIX_NO_INLINE void Simulator::addBorderPairs(std::uint32_t border, std::size_t first,
+                                                std::uint64_t bits, bool reuse) {
+  // A pair keeps its contacts if neither the border nor the shape moved.
+  const bool reuseBorder = reuse && shapeMoved_[border] == 0;
+  const std::uint32_t borderBody = shapes_[border].body;
+  for (; bits != 0; bits &= bits - 1) {
+    const std::uint32_t shape =
+        gridShapes_[first + static_cast<std::size_t>(std::countr_zero(bits))];
+    // (The border is shape A: a half-plane comes first. A pair within one body is always
+    // tested: whether it collides is its object's call.)
+    if (reuseBorder && shapeMoved_[shape] == 0 && shapes_[shape].body != borderBody)
+      reusePair(border, shape);
+    else
+      addContacts(border, shape);
   }
 }
 
