@@ -75,7 +75,8 @@ void Spherus::readSensors(Vector2 f) {
     out[contactSensors + pixels + 1] = unit(-speed);
   }
   // The link's anchors are the circles' centres: its length without ElasticLink::length()'s
-  // two rotations of a zero anchor (a cosine and a sine each), the same value bit for bit.
+  // two rotations of a zero anchor (a cosine and a sine each), the same value bit for bit
+  // while the circles' angles are finite (a rotation by a NaN angle made it NaN).
   sensors_[sensorCount - 1] = unit((right_->r - left_->r).length() / parameters_.maxLinkLength);
 }
 
