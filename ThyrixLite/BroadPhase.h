@@ -4,6 +4,7 @@
 
 #include <ThyrixLite/BoundingBox.h>
 #include <ThyrixLite/SweepAndPrune.h>
+#include <Tools/Inlining.h>
 
 #include <cstdint>
 #include <span>
@@ -82,11 +83,10 @@ class BroadPhase {
   /// More than smallCount boxes: the sweep or the grid. (Not inlined into findPairs, whose
   /// few-box calls then keep a light frame.)
 #if defined(__GNUC__)
-  [[gnu::noinline]]
+  THYRIX_NO_INLINE
 #endif
-  void
-  findPairsAmongMany(std::span<const BoundingBox> boxes, const SweepAndPrune::Extents* extents,
-                     std::vector<BoxPair>& pairs);
+  void findPairsAmongMany(std::span<const BoundingBox> boxes, const SweepAndPrune::Extents* extents,
+                          std::vector<BoxPair>& pairs);
   void findPairsInGrid(std::span<const BoundingBox> boxes, real extentSum, real maxExtent,
                        std::vector<BoxPair>& pairs);
   void findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::int64_t lowX,

@@ -75,16 +75,20 @@ class ObjectList {
 /// Calls @p other on the objects whose indices are listed in @p listed (increasing) and
 /// @p core on all the others, in index order. The runs of objects between listed ones need no
 /// test per object: the simulator runs its core shapes' step hooks so, without virtual calls.
+/// (By iterator, the list's end read once: by index, a call out of line made every object
+/// after it read the list's size again.)
 template <class Core, class Other>
 void forEachInRuns(const ObjectList& objects, std::span<const std::uint32_t> listed, Core&& core,
                    Other&& other) {
-  std::size_t begin = 0;
-  for (const std::uint32_t index : listed) {
-    for (std::size_t i = begin; i < index; ++i) core(objects[i]);
-    other(objects[index]);
-    begin = index + std::size_t{1};
+  auto object = objects.begin();
+  std::size_t index = 0;
+  for (const std::uint32_t next : listed) {
+    for (; index < next; ++index, ++object) core(*object);
+    other(*object);
+    ++index;
+    ++object;
   }
-  for (std::size_t i = begin; i < objects.size(); ++i) core(objects[i]);
+  for (const auto end = objects.end(); object != end; ++object) core(*object);
 }
 
 /// This step's contacts of a Simulator: `size()`, `operator[]` and range-for give

@@ -6,6 +6,7 @@
 #include <ThyrixLite/GraphicalObject.h>
 #include <ThyrixLite/ThyrixParameters.h>
 #include <ThyrixLite/Vector2.h>
+#include <Tools/Inlining.h>
 
 #include <bit>
 #include <cstdint>
@@ -216,7 +217,7 @@ class PhysicalObject : public GraphicalObject {
   /// bodies, mostly unpushed, then keeps to the few instructions of the test (inline, the
   /// divisions' loads merged with the test's, which then went through the stack).
   template <bool InField>
-  [[gnu::noinline]] void velocitiesFromPushes([[maybe_unused]] Vector2 gravity) {
+  THYRIX_NO_INLINE void velocitiesFromPushes([[maybe_unused]] Vector2 gravity) {
     if (fixed) {
       v = {};
       omega = 0;

@@ -182,7 +182,8 @@ void Simulator::computeDerivativesInGravity() {
   // call each, just before their own hook, since only they know where their mass is (an
   // articulated agent's links; an elastoid has none, its bodies are objects of their own).
   const Vector2 gravity = gravity_;
-  forEachObjectInRuns(
+  forEachInRuns(
+      objects, customObjects_,
       [gravity](PhysicalObject& object) { object.computeDerivativesInField(gravity); },
       [gravity](PhysicalObject& object) {
         object.applyWeight(gravity);

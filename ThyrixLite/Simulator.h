@@ -85,7 +85,8 @@ class Simulator : public World {
       computeDerivativesInGravity();
       return;
     }
-    forEachObjectInRuns(
+    forEachInRuns(
+        objects, customObjects_,
         [](PhysicalObject& object) { object.PhysicalObject::computeDerivativesWithoutContacts(); },
         [](PhysicalObject& object) { object.computeDerivativesWithoutContacts(); });
   }
@@ -222,21 +223,6 @@ class Simulator : public World {
 
   /// computeDerivativesWithoutContacts() with a gravity field that is not zero.
   void computeDerivativesInGravity();
-  /// forEachInRuns() over the objects, customObjects_ listed, by iterator: the last run's end
-  /// is read once (by index, a core shape's call out of line, for a pushed body, made every
-  /// object after it recompute the count).
-  template <class Core, class Other>
-  void forEachObjectInRuns(Core&& core, Other&& other) {
-    auto object = objects.begin();
-    std::size_t index = 0;
-    for (const std::uint32_t listed : customObjects_) {
-      for (; index < listed; ++index, ++object) core(*object);
-      other(*object);
-      ++index;
-      ++object;
-    }
-    for (const auto end = objects.end(); object != end; ++object) core(*object);
-  }
   void updateGeometry();
   /// updateGeometry for a body that changed (its collision filters with @p newFilters), or
   /// that has several shapes (whose poses are then compared one by one).
@@ -337,10 +323,11 @@ class Simulator : public World {
   std::uint32_t reusedBegin_ = 0;
   std::uint32_t reusedEnd_ = 0;
   void indexPreviousContacts();
-  // Each contact's pair as detection appended it, and the pairs of each shape A chained in
-  // list order, noted as contacts are appended (noteContactPair()): the next step finds a
-  // pair's contacts from them without sorting the list. Kept for `contacts` and, swapped
-  // with it, for previousContacts_.
+  // Each contact's pair as detection appended it, and, in a list longer than
+  // scannedListLength, the pairs of each shape A chained in list order (noteContactPair(),
+  // chainFirstPairs()): the next step finds a pair's contacts from them without sorting the
+  // list (a short list is scanned). Kept for `contacts` and, swapped with it, for
+  // previousContacts_.
   struct ContactPair {
     std::uint64_t key;      // pairKey()
     std::uint32_t nextOfA;  // first contact of the next pair with the same shape A, or noPair
@@ -365,11 +352,11 @@ class Simulator : public World {
   void noteContactPair(ContactPair* notes, std::uint32_t position, std::uint32_t shapeA,
                        std::uint32_t shapeB, bool first);
   /// noteContactPair()'s chaining of a pair's first contact, at @p position (from
-  /// unchainedContacts on).
+  /// scannedListLength on).
   void chainPair(ContactPair* notes, std::uint32_t position, std::uint32_t shapeA);
   /// A list of up to this many contacts has no chains (its lookups scan it); a longer one
   /// has its first pairs chained when its detection ends.
-  static constexpr std::size_t unchainedContacts = 16;
+  static constexpr std::size_t scannedListLength = 16;
   /// Chains the pairs of this detection (from position @p start) that chainPair() left out.
   void chainFirstPairs(std::uint32_t start);
   /// The notes of `contacts`, with room for @p count contacts.
@@ -523,8 +510,11 @@ class Simulator : public World {
   void countContact(std::uint32_t bodyA, std::uint32_t bodyB);
   /// Zeroes the counts, and sizes countedObjects_ for the objects.
   void resetCounts();
-  /// Sizes countedObjects_ for the objects (one more than there are).
-  void fitCountedObjects();
+  /// Sizes countedObjects_ for the objects (one more than there are), if they grew.
+  void fitCountedObjects() {
+    if (countedObjects_.size() < objects.size() + 1) growCountedObjects();
+  }
+  void growCountedObjects();
 
   std::vector<SolverBody> bodies_;  // valid for the bodies of this step's rows only
   std::vector<std::uint8_t> movable_;

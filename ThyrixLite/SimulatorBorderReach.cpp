@@ -209,7 +209,8 @@ template <class Real>
 /// Sets in @p reach (one word per border of @p lines) the bits of @p retest whose boxes (from
 /// @p boxes, the word's first) reach behind each border. A whole word of moved shapes (a crowd
 /// in motion) is tested without the walk over its bits, in double two boxes at a time with SSE2
-/// (reachFullWord); otherwise a plain loop over its 64 boxes.
+/// (reachFullWord); the moved boxes of a word, for several borders, two borders at a time with
+/// SSE2 (reachMovedBoxes); otherwise plain loops.
 template <std::size_t Borders>
 void reachWord(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t retest,
                std::uint64_t* reach) {

@@ -93,7 +93,7 @@ void Simulator::detectContacts() {
     previousChains_.resize(shapes_.size());
   }
   nextListStamp();
-  if (countedObjects_.size() < objects.size() + 1) fitCountedObjects();
+  fitCountedObjects();
   contactsSolved_ = false;  // these contacts, until the solver gives them forces
   statistics_.reusedContacts = 0;
   // (Without new objects or objects with rules, there is nothing to look at.)
@@ -149,7 +149,7 @@ void Simulator::detectContacts() {
   flush();
   findBorderContacts(reuse);
   flushReused();
-  if (contacts.size() > unchainedContacts) chainFirstPairs(start);
+  if (contacts.size() > scannedListLength) chainFirstPairs(start);
   contactsComplete_ = fromEmpty;
   previousValid_ = false;  // used: the next detection compares against this one
   statistics_.contacts = contacts.size();
@@ -203,7 +203,7 @@ inline Simulator::ContactPair* Simulator::notesFor(std::size_t count) {
   return contactPairs_.data();
 }
 
-// Inline: the first contact of every pair appended from position unchainedContacts on is
+// Inline: the first contact of every pair appended from position scannedListLength on is
 // chained. (A short list, a small world's, is searched by a scan instead (findPreviousPair);
 // its first pairs are chained if it grows longer, at the end of the detection:
 // chainFirstPairs().)
@@ -226,7 +226,7 @@ inline void Simulator::noteContactPair(ContactPair* notes, std::uint32_t positio
   // A detection visits each pair once and appends its points one after another: the first
   // point's pair is chained to shape A's last one, or begins its chain.
   notes[position] = {pairKey(shapeA, shapeB), noPair};
-  if (first && position >= unchainedContacts) chainPair(notes, position, shapeA);
+  if (first && position >= scannedListLength) chainPair(notes, position, shapeA);
 }
 
 // Inline: every contact appended is counted.
@@ -242,11 +242,11 @@ inline void Simulator::countContact(std::uint32_t bodyA, std::uint32_t bodyB) {
 }
 
 void Simulator::chainFirstPairs(std::uint32_t start) {
-  // The pairs chainPair() left out (positions start to unchainedContacts - 1), put at the
+  // The pairs chainPair() left out (positions start to scannedListLength - 1), put at the
   // heads of their chains last first: the chains are then as if each pair had been chained
   // in order.
   ContactPair* const notes = contactPairs_.data();
-  const auto end = static_cast<std::uint32_t>(std::min(contacts.size(), unchainedContacts));
+  const auto end = static_cast<std::uint32_t>(std::min(contacts.size(), scannedListLength));
   for (std::uint32_t position = end; position-- > start;) {
     if (position > start && notes[position - 1].key == notes[position].key)
       continue;  // not its pair's first contact
@@ -262,12 +262,14 @@ void Simulator::chainFirstPairs(std::uint32_t start) {
 }
 
 // Out of line: objects registered since (rare); its callers then save no registers for it.
-THYRIX_NO_INLINE void Simulator::fitCountedObjects() { countedObjects_.resize(objects.size() + 1); }
+THYRIX_NO_INLINE void Simulator::growCountedObjects() {
+  countedObjects_.resize(objects.size() + 1);
+}
 
 void Simulator::resetCounts() {
   for (std::size_t k = 0; k < countedCount_; ++k) objectContactCursor_[countedObjects_[k]] = 0;
   countedCount_ = 0;
-  if (countedObjects_.size() < objects.size() + 1) fitCountedObjects();
+  fitCountedObjects();
 }
 
 // Inline: the detection loop and the borders' loop call it for every pair at rest.
@@ -308,7 +310,7 @@ void Simulator::appendReused() {
     const std::uint64_t key = pairs[i].key;
     notes[position + i] = {key, noPair};
     // (The run holds whole pairs: its first contact begins one.)
-    if (position + i >= unchainedContacts && (i == 0 || key != pairs[i - 1].key))
+    if (position + i >= scannedListLength && (i == 0 || key != pairs[i - 1].key))
       chainPair(notes, position + i, static_cast<std::uint32_t>(key >> 32));
   }
   statistics_.reusedContacts += count;
@@ -372,12 +374,12 @@ void Simulator::addCirclePairs(std::span<const CirclePair> pairs) {
         continue;
       appendContact(pair.shapeA, pair.shapeB, p, normal);
       notes[position] = {pairKey(pair.shapeA, pair.shapeB), noPair};
-      if (longList || position >= unchainedContacts) chainPair(notes, position, pair.shapeA);
+      if (longList || position >= scannedListLength) chainPair(notes, position, pair.shapeA);
       ++position;
     }
   };
   // (A crowd's batches begin past the unchained contacts: they chain every pair untested.)
-  if (position >= unchainedContacts)
+  if (position >= scannedListLength)
     add(std::true_type{});
   else
     add(std::false_type{});
@@ -453,7 +455,7 @@ void Simulator::indexContacts() {
   std::swap(listedObjects_, countedObjects_);
   listedCount_ = countedCount_;
   countedCount_ = 0;
-  if (countedObjects_.size() < objects.size() + 1) fitCountedObjects();
+  fitCountedObjects();
 }
 
 void Simulator::clearContactLists() {

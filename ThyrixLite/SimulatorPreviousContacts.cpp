@@ -104,7 +104,7 @@ std::size_t Simulator::findPreviousPair(std::uint64_t key, std::uint32_t shapeA)
   // A's chain, or a binary search for a shape with many pairs.
   const ContactPair* const list = previousPairs_.data();
   const std::size_t count = previousCount_;
-  if (count <= unchainedContacts) {  // a short list, not chained: a scan
+  if (count <= scannedListLength) {  // a short list, not chained: a scan
     for (std::size_t k = 0; k < count; ++k)
       if (list[k].key == key) return k;
     return count;
