@@ -2,25 +2,18 @@
 #include <Tools/Inlining.h>
 #include <Tools/ProcessorFeatures.h>
 
-#include <cstddef>
-
 namespace thyrix {
 namespace {
 
-// integrateExcept's loop: forEachInRuns' runs, written out with the core shapes' hook inline, so
-// that the AVX copy below compiles all of it (a call it made would run SSE2 code).
+// integrateExcept's loop, inlined whole (forEachInRuns, the core shapes' hook), so that the AVX
+// copy below compiles all of it (a call it made would run SSE2 code).
 THYRIX_ALWAYS_INLINE void integrateInRuns(const ObjectList& objects,
                                           std::span<const std::uint32_t> customObjects, real dt) {
-  auto object = objects.begin();
-  std::size_t index = 0;
-  for (const std::uint32_t listed : customObjects) {
-    for (; index < listed; ++index, ++object) (*object).PhysicalObject::integrate(dt);
-    (*object).integrate(dt);
-    ++index;
-    ++object;
-  }
-  for (const auto end = objects.end(); object != end; ++object)
-    (*object).PhysicalObject::integrate(dt);
+  forEachInRuns(
+      objects, customObjects,
+      [dt](PhysicalObject& object)
+          THYRIX_LAMBDA_ALWAYS_INLINE { object.PhysicalObject::integrate(dt); },
+      [dt](PhysicalObject& object) { object.integrate(dt); });
 }
 
 #if defined(THYRIX_AVX_DISPATCH)

@@ -4,6 +4,7 @@
 
 #include <ThyrixLite/GlobalContactInfo.h>
 #include <ThyrixLite/PhysicalObject.h>
+#include <Tools/Inlining.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -78,8 +79,9 @@ class ObjectList {
 /// (By iterator, the list's end read once: by index, a call out of line made every object
 /// after it read the list's size again.)
 template <class Core, class Other>
-void forEachInRuns(const ObjectList& objects, std::span<const std::uint32_t> listed, Core&& core,
-                   Other&& other) {
+THYRIX_ALWAYS_INLINE void forEachInRuns(const ObjectList& objects,
+                                        std::span<const std::uint32_t> listed, Core&& core,
+                                        Other&& other) {
   auto object = objects.begin();
   std::size_t index = 0;
   for (const std::uint32_t next : listed) {

@@ -62,6 +62,14 @@ template <class Real>
 void storePair(Vector2& v, __m128d pair) {
   _mm_storeu_pd(reinterpret_cast<Real*>(&v), pair);
 }
+/// include() of the box from @p least - @p radius to @p most + @p radius, x and y in one
+/// instruction each: the same operations, so the same bits (std::min(a, b) is MINPD(b, a)).
+template <class Real>
+void includeWidened(Vector2& boxMin, Vector2& boxMax, __m128d least, __m128d most, Real radius) {
+  const __m128d round = _mm_set1_pd(radius);
+  storePair<Real>(boxMin, _mm_min_pd(_mm_sub_pd(least, round), loadPair<Real>(boxMin)));
+  storePair<Real>(boxMax, _mm_max_pd(_mm_add_pd(most, round), loadPair<Real>(boxMax)));
+}
 #endif
 
 /// Widens the box (@p boxMin, @p boxMax) by the box of the capsule of ends @p p0 and @p p1 and
@@ -74,11 +82,7 @@ inline void includeCapsuleBox(const Vector2& p0, const Vector2& p1, Real radius,
   if constexpr (std::is_same_v<Real, double>) {
     const __m128d end0 = loadPair<Real>(p0);
     const __m128d end1 = loadPair<Real>(p1);
-    const __m128d round = _mm_set1_pd(radius);
-    const __m128d least = _mm_min_pd(end1, end0);
-    const __m128d most = _mm_max_pd(end1, end0);
-    storePair<Real>(boxMin, _mm_min_pd(_mm_sub_pd(least, round), loadPair<Real>(boxMin)));
-    storePair<Real>(boxMax, _mm_max_pd(_mm_add_pd(most, round), loadPair<Real>(boxMax)));
+    includeWidened<Real>(boxMin, boxMax, _mm_min_pd(end1, end0), _mm_max_pd(end1, end0), radius);
     return;
   }
 #endif
@@ -137,9 +141,7 @@ inline void capsuleGeometry(Vector2 r, Vector2 axis, Vector2& p0, Vector2& p1, R
     storePair<Real>(p1, end1);
     const __m128d least = _mm_min_pd(end1, end0);
     const __m128d most = _mm_max_pd(end1, end0);
-    const __m128d round = _mm_set1_pd(radius);
-    storePair<Real>(boxMin, _mm_min_pd(_mm_sub_pd(least, round), loadPair<Real>(boxMin)));
-    storePair<Real>(boxMax, _mm_max_pd(_mm_add_pd(most, round), loadPair<Real>(boxMax)));
+    includeWidened<Real>(boxMin, boxMax, least, most, radius);
     Real moved = 0;
     if (known) {
       const __m128d noSign = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffff));
@@ -194,9 +196,7 @@ inline Real circleGeometry(Vector2 r, Vector2& p0, Vector2& p1, Real radius, Rea
     const __m128d last = loadPair<Real>(p0);
     storePair<Real>(p0, centre);
     storePair<Real>(p1, centre);
-    const __m128d round = _mm_set1_pd(radius);
-    storePair<Real>(boxMin, _mm_min_pd(_mm_sub_pd(centre, round), loadPair<Real>(boxMin)));
-    storePair<Real>(boxMax, _mm_max_pd(_mm_add_pd(centre, round), loadPair<Real>(boxMax)));
+    includeWidened<Real>(boxMin, boxMax, centre, centre, radius);
     Real travel = 0;
     if (known) {
       const __m128d noSign = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffff));
