@@ -212,7 +212,30 @@ void BroadPhase::findPairs(std::span<const BoundingBox> boxes, std::span<const s
     findPairsAmongFew(boxes, remembered ? moved[0] : 0, remembered, pairs);
     return;
   }
+  findPairsAboveFew(boxes, moved, pairs, extents);
+}
+
+void BroadPhase::findPairsAboveFew(std::span<const BoundingBox> boxes,
+                                   std::span<const std::uint64_t> moved,
+                                   std::vector<BoxPair>& pairs,
+                                   const SweepAndPrune::Extents* extents) {
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  // Many boxes: when few changed since the last call, those against all (the pairs among the
+  // others are the last call's). Which changed is judged by the corners, bit for bit (the
+  // flagged boxes compared with the last call's): not by the flags, so that the path, and the
+  // order of the pairs, depend on the boxes alone (a simulator without rest skipping flags
+  // every box, and must find the same pairs in the same order).
+  if (!moved.empty() && rememberedCount_ == count) {
+    const std::uint32_t changed = findChanged(boxes, moved);
+    if (changed <= movedLimit(count)) {
+      findPairsAmongMoved(boxes, pairs);
+      keepPairs(pairs);
+      return;
+    }
+  }
   findPairsAmongMany(boxes, extents, pairs);
+  // (A sweep given never-paired bits leaves such pairs out: not every pair, none kept.)
+  if (lastTookGrid_ || neverPairedCount_ != count) rememberAll(boxes, pairs);
 }
 
 void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes,

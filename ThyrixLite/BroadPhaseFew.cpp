@@ -1,8 +1,12 @@
 /// @file BroadPhaseFew.cpp
-/// @brief BroadPhase up to smallCount boxes: every pair, as one bit mask per box.
+/// @brief BroadPhase's incremental paths: up to smallCount boxes, every pair as one bit mask per
+/// box; above, when few boxes moved, the moved boxes against every box.
 #include <ThyrixLite/BroadPhase.h>
 #include <Tools/ProcessorFeatures.h>
 
+#include <Tools/Inlining.h>
+
+#include <algorithm>
 #include <bit>
 #include <type_traits>
 #if defined(__SSE2__)
@@ -16,6 +20,9 @@ namespace thyrix {
 namespace {
 
 static_assert(BroadPhase::smallCount <= 64, "few boxes keep their overlaps in 64-bit masks");
+
+/// An unsigned integer of a real's size, to compare reals bit for bit.
+using Bits = std::conditional_t<sizeof(real) == 8, std::uint64_t, std::uint32_t>;
 
 /// Bits 0 to count - 1.
 std::uint64_t lowBits(std::uint32_t count) {
@@ -47,28 +54,89 @@ struct Sse<float> {
   static Vector both(Vector a, Vector b) { return _mm_and_ps(a, b); }
   static int signs(Vector a) { return _mm_movemask_ps(a); }
 };
+#endif
 
-// For each box m of @p moved: bit j of @p rows[m] set when box j of @p count (in @p soa)
-// overlaps box m of @p boxes, a register of boxes per instruction (a comparison with NaN is
-// false, as in C++). Bits from count on are garbage (padding): the caller masks them.
-void overlapRowsSse(const BoundingBox* boxes, std::uint64_t moved, const BoxColumns& soa,
-                    std::uint32_t count, std::uint64_t* rows) {
+/// The moved boxes of at most 64 (one word of bits), in increasing index m, each with its row:
+/// one word, at `rows + m` (the few-box path).
+class FewMovedRows {
+ public:
+  /// Whether a row is one word (at most 64 boxes).
+  static constexpr bool oneWord = true;
+  FewMovedRows(std::uint64_t moved, std::uint64_t* rows) : bits_(moved), rows_(rows) {}
+  /// The next moved box @p m and its row @p row; false when there is none.
+  THYRIX_ALWAYS_INLINE bool next(std::uint32_t& m, std::uint64_t*& row) {
+    if (bits_ == 0) return false;
+    m = static_cast<std::uint32_t>(std::countr_zero(bits_));
+    bits_ &= bits_ - 1;
+    row = rows_ + m;
+    return true;
+  }
+
+ private:
+  std::uint64_t bits_;
+  std::uint64_t* rows_;
+};
+
+/// The moved boxes of many (bit m % 64 of word m / 64), in increasing m, each with its row of
+/// `words` words: the k-th moved box's (k from 0) at `rows + k * words`.
+class ManyMovedRows {
+ public:
+  static constexpr bool oneWord = false;
+  ManyMovedRows(const std::uint64_t* moved, std::size_t words, std::uint64_t* rows)
+      : moved_(moved), words_(words), bits_(moved[0]), row_(rows) {}
+  THYRIX_ALWAYS_INLINE bool next(std::uint32_t& m, std::uint64_t*& row) {
+    while (bits_ == 0) {
+      if (++word_ >= words_) return false;
+      bits_ = moved_[word_];
+    }
+    m = static_cast<std::uint32_t>(64 * word_ + static_cast<std::size_t>(std::countr_zero(bits_)));
+    bits_ &= bits_ - 1;
+    row = row_;
+    row_ += words_;
+    return true;
+  }
+
+ private:
+  const std::uint64_t* moved_;
+  std::size_t words_;
+  std::uint64_t bits_;
+  std::size_t word_ = 0;
+  std::uint64_t* row_;
+};
+
+// The kernels below: for each moved box m of @p rows (FewMovedRows or ManyMovedRows), bit
+// j % 64 of word j / 64 of its row set when box j of @p count overlaps box m of @p boxes, a word
+// of 64 boxes at a time (one, for few boxes: the compiler then keeps no loop over words).
+// (Cursors, not a function taking the kernels' loops: those are compiled for AVX, and GCC
+// inlines no such loop into a function that is not.)
+
+#if defined(__SSE2__)
+// A register of boxes per instruction (a comparison with NaN is false, as in C++).
+template <class Rows>
+void overlapRowsSse(const BoundingBox* boxes, Rows rows, const BoxColumns& soa,
+                    std::uint32_t count) {
   using S = Sse<real>;
-  for (; moved != 0; moved &= moved - 1) {
-    const auto m = static_cast<std::uint32_t>(std::countr_zero(moved));
+  std::uint32_t m = 0;
+  std::uint64_t* row = nullptr;
+  while (rows.next(m, row)) {
     const auto boxLowerX = S::broadcast(boxes[m].lower.x);
     const auto boxUpperX = S::broadcast(boxes[m].upper.x);
     const auto boxLowerY = S::broadcast(boxes[m].lower.y);
     const auto boxUpperY = S::broadcast(boxes[m].upper.y);
-    std::uint64_t row = 0;
-    for (std::uint32_t j = 0; j < count; j += S::lanes) {
-      auto hit = S::lessOrEqual(boxLowerX, S::load(soa.upperX + j));
-      hit = S::both(hit, S::lessOrEqual(S::load(soa.lowerX + j), boxUpperX));
-      hit = S::both(hit, S::lessOrEqual(boxLowerY, S::load(soa.upperY + j)));
-      hit = S::both(hit, S::lessOrEqual(S::load(soa.lowerY + j), boxUpperY));
-      row |= static_cast<std::uint64_t>(S::signs(hit)) << j;
+    for (std::uint32_t base = 0; Rows::oneWord || base < count; base += 64) {  // (one: no test)
+      const std::uint32_t end = Rows::oneWord ? count : std::min(count - base, 64u);
+      std::uint64_t word = 0;
+      for (std::uint32_t j = 0; j < end; j += S::lanes) {
+        const std::uint32_t at = base + j;
+        auto hit = S::lessOrEqual(boxLowerX, S::load(soa.upperX + at));
+        hit = S::both(hit, S::lessOrEqual(S::load(soa.lowerX + at), boxUpperX));
+        hit = S::both(hit, S::lessOrEqual(boxLowerY, S::load(soa.upperY + at)));
+        hit = S::both(hit, S::lessOrEqual(S::load(soa.lowerY + at), boxUpperY));
+        word |= static_cast<std::uint64_t>(S::signs(hit)) << j;
+      }
+      row[base / 64] = word;
+      if constexpr (Rows::oneWord) break;
     }
-    rows[m] = row;
   }
 }
 #endif
@@ -78,83 +146,95 @@ void overlapRowsSse(const BoundingBox* boxes, std::uint64_t moved, const BoxColu
 // four comparisons chained in a mask register. Comparisons only, ordered (false with NaN, as
 // in C++; a <= b written b >= a where b is loaded, so that the load is the comparison's
 // operand): the same bits. (Templates: a float build never instantiates them.)
-template <class Real>
-[[gnu::target("avx")]] void overlapRowsAvx(const BoundingBox* boxes, std::uint64_t moved,
-                                           const Real* lowerX, const Real* upperX,
-                                           const Real* lowerY, const Real* upperY,
-                                           std::uint32_t count, std::uint64_t* rows) {
-  for (; moved != 0; moved &= moved - 1) {
-    const auto m = static_cast<std::uint32_t>(std::countr_zero(moved));
+template <class Real, class Rows>
+[[gnu::target("avx")]] void overlapRowsAvx(const BoundingBox* boxes, Rows rows, const Real* lowerX,
+                                           const Real* upperX, const Real* lowerY,
+                                           const Real* upperY, std::uint32_t count) {
+  std::uint32_t m = 0;
+  std::uint64_t* row = nullptr;
+  while (rows.next(m, row)) {
     const __m256d boxLowerX = _mm256_set1_pd(Real{boxes[m].lower.x});
     const __m256d boxUpperX = _mm256_set1_pd(Real{boxes[m].upper.x});
     const __m256d boxLowerY = _mm256_set1_pd(Real{boxes[m].lower.y});
     const __m256d boxUpperY = _mm256_set1_pd(Real{boxes[m].upper.y});
-    std::uint64_t row = 0;
-    for (std::size_t j = 0; j < count; j += 4) {
-      __m256d hit = _mm256_cmp_pd(boxLowerX, _mm256_loadu_pd(upperX + j), _CMP_LE_OQ);
-      hit = _mm256_and_pd(hit, _mm256_cmp_pd(boxUpperX, _mm256_loadu_pd(lowerX + j), _CMP_GE_OQ));
-      hit = _mm256_and_pd(hit, _mm256_cmp_pd(boxLowerY, _mm256_loadu_pd(upperY + j), _CMP_LE_OQ));
-      hit = _mm256_and_pd(hit, _mm256_cmp_pd(boxUpperY, _mm256_loadu_pd(lowerY + j), _CMP_GE_OQ));
-      row |= static_cast<std::uint64_t>(_mm256_movemask_pd(hit)) << j;
+    for (std::uint32_t base = 0; Rows::oneWord || base < count; base += 64) {  // (one: no test)
+      const std::uint32_t end = Rows::oneWord ? count : std::min(count - base, 64u);
+      std::uint64_t word = 0;
+      for (std::uint32_t j = 0; j < end; j += 4) {
+        const std::uint32_t at = base + j;
+        __m256d hit = _mm256_cmp_pd(boxLowerX, _mm256_loadu_pd(upperX + at), _CMP_LE_OQ);
+        hit =
+            _mm256_and_pd(hit, _mm256_cmp_pd(boxUpperX, _mm256_loadu_pd(lowerX + at), _CMP_GE_OQ));
+        hit =
+            _mm256_and_pd(hit, _mm256_cmp_pd(boxLowerY, _mm256_loadu_pd(upperY + at), _CMP_LE_OQ));
+        hit =
+            _mm256_and_pd(hit, _mm256_cmp_pd(boxUpperY, _mm256_loadu_pd(lowerY + at), _CMP_GE_OQ));
+        word |= static_cast<std::uint64_t>(_mm256_movemask_pd(hit)) << j;
+      }
+      row[base / 64] = word;
+      if constexpr (Rows::oneWord) break;
     }
-    rows[m] = row;
   }
 }
 
-template <class Real>
-[[gnu::target("avx512f")]] void overlapRowsAvx512(const BoundingBox* boxes, std::uint64_t moved,
+template <class Real, class Rows>
+[[gnu::target("avx512f")]] void overlapRowsAvx512(const BoundingBox* boxes, Rows rows,
                                                   const Real* lowerX, const Real* upperX,
                                                   const Real* lowerY, const Real* upperY,
-                                                  std::uint32_t count, std::uint64_t* rows) {
-  for (; moved != 0; moved &= moved - 1) {
-    const auto m = static_cast<std::uint32_t>(std::countr_zero(moved));
+                                                  std::uint32_t count) {
+  std::uint32_t m = 0;
+  std::uint64_t* row = nullptr;
+  while (rows.next(m, row)) {
     const __m512d boxLowerX = _mm512_set1_pd(Real{boxes[m].lower.x});
     const __m512d boxUpperX = _mm512_set1_pd(Real{boxes[m].upper.x});
     const __m512d boxLowerY = _mm512_set1_pd(Real{boxes[m].lower.y});
     const __m512d boxUpperY = _mm512_set1_pd(Real{boxes[m].upper.y});
-    std::uint64_t row = 0;
-    for (std::size_t j = 0; j < count; j += 8) {
-      __mmask8 hit = _mm512_cmp_pd_mask(boxLowerX, _mm512_loadu_pd(upperX + j), _CMP_LE_OQ);
-      hit = _mm512_mask_cmp_pd_mask(hit, boxUpperX, _mm512_loadu_pd(lowerX + j), _CMP_GE_OQ);
-      hit = _mm512_mask_cmp_pd_mask(hit, boxLowerY, _mm512_loadu_pd(upperY + j), _CMP_LE_OQ);
-      hit = _mm512_mask_cmp_pd_mask(hit, boxUpperY, _mm512_loadu_pd(lowerY + j), _CMP_GE_OQ);
-      row |= static_cast<std::uint64_t>(hit) << j;
+    for (std::uint32_t base = 0; Rows::oneWord || base < count; base += 64) {  // (one: no test)
+      const std::uint32_t end = Rows::oneWord ? count : std::min(count - base, 64u);
+      std::uint64_t word = 0;
+      for (std::uint32_t j = 0; j < end; j += 8) {
+        const std::uint32_t at = base + j;
+        __mmask8 hit = _mm512_cmp_pd_mask(boxLowerX, _mm512_loadu_pd(upperX + at), _CMP_LE_OQ);
+        hit = _mm512_mask_cmp_pd_mask(hit, boxUpperX, _mm512_loadu_pd(lowerX + at), _CMP_GE_OQ);
+        hit = _mm512_mask_cmp_pd_mask(hit, boxLowerY, _mm512_loadu_pd(upperY + at), _CMP_LE_OQ);
+        hit = _mm512_mask_cmp_pd_mask(hit, boxUpperY, _mm512_loadu_pd(lowerY + at), _CMP_GE_OQ);
+        word |= static_cast<std::uint64_t>(hit) << j;
+      }
+      row[base / 64] = word;
+      if constexpr (Rows::oneWord) break;
     }
-    rows[m] = row;
   }
 }
 #endif
 
-/// For each box m of @p moved, bit j of @p rows[m] set when box j (of @p count, in @p soa)
-/// overlaps box m of @p boxes: the same four comparisons as BoundingBox::overlaps, on the
-/// corners stored by coordinate, several boxes at a time where the processor allows (the
-/// padding of @p soa makes the last vector whole; its bits are garbage, masked by the caller).
-/// All moved boxes in one call: one dispatch, and the vector code's entry and exit, a step.
-void overlapRows(const BoundingBox* boxes, std::uint64_t moved, const BoxColumns& soa,
-                 std::uint32_t count, std::uint64_t* rows) {
+/// The rows of the moved boxes of @p rows against the @p count boxes of @p soa: the same four
+/// comparisons as BoundingBox::overlaps, on the corners stored by coordinate, several boxes at
+/// a time where the processor allows (the padding of @p soa, 7 past count, makes the last
+/// vector whole; its bits are garbage, masked by the caller). All moved boxes in one call: one
+/// dispatch, and the vector code's entry and exit, a step.
+template <class Rows>
+void overlapRows(const BoundingBox* boxes, Rows rows, const BoxColumns& soa, std::uint32_t count) {
 #if defined(THYRIX_AVX_DISPATCH)
   if constexpr (std::is_same_v<real, double>) {
     if (processorHasAvx512())
-      return overlapRowsAvx512(boxes, moved, soa.lowerX, soa.upperX, soa.lowerY, soa.upperY, count,
-                               rows);
+      return overlapRowsAvx512(boxes, rows, soa.lowerX, soa.upperX, soa.lowerY, soa.upperY, count);
     if (processorHasAvx())
-      return overlapRowsAvx(boxes, moved, soa.lowerX, soa.upperX, soa.lowerY, soa.upperY, count,
-                            rows);
+      return overlapRowsAvx(boxes, rows, soa.lowerX, soa.upperX, soa.lowerY, soa.upperY, count);
   }
 #endif
 #if defined(__SSE2__)
-  overlapRowsSse(boxes, moved, soa, count, rows);
+  overlapRowsSse(boxes, rows, soa, count);
 #else
-  for (; moved != 0; moved &= moved - 1) {
-    const auto m = static_cast<std::uint32_t>(std::countr_zero(moved));
+  std::uint32_t m = 0;
+  std::uint64_t* row = nullptr;
+  while (rows.next(m, row)) {
     const BoundingBox& box = boxes[m];
-    std::uint64_t row = 0;
     for (std::uint32_t j = 0; j < count; ++j) {
       const bool hit = (box.lower.x <= soa.upperX[j]) & (soa.lowerX[j] <= box.upper.x) &
                        (box.lower.y <= soa.upperY[j]) & (soa.lowerY[j] <= box.upper.y);
-      row |= std::uint64_t{hit} << j;
+      if (j % 64 == 0) row[j / 64] = 0;
+      row[j / 64] |= std::uint64_t{hit} << (j % 64);
     }
-    rows[m] = row;
   }
 #endif
 }
@@ -188,7 +268,7 @@ void BroadPhase::findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint
   // Only rows that had pairs, moved boxes, and boxes below a moved box that now meets them can
   // change; every other row stays empty.
   std::uint64_t visit = (remembered ? rowsWithPairs_ : 0) | moved;
-  overlapRows(boxes.data(), moved, soa, count, movedRows_.data());
+  overlapRows(boxes.data(), FewMovedRows(moved, movedRows_.data()), soa, count);
   const std::uint64_t inBoxes = lowBits(count);
   for (std::uint64_t bits = moved; bits != 0; bits &= bits - 1) {
     const auto m = static_cast<std::uint32_t>(std::countr_zero(bits));
@@ -215,6 +295,109 @@ void BroadPhase::findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint
       pairs.push_back({i, static_cast<std::uint32_t>(std::countr_zero(row))});
   }
   rememberedCount_ = count;
+}
+
+void BroadPhase::keepPairs(const std::vector<BoxPair>& pairs) {
+  // (Grown geometrically, as the caller's pairs: assign() would allocate the exact size each
+  // time the pairs grow.)
+  if (pairs.size() > keptPairs_.capacity())
+    keptPairs_.reserve(std::max(pairs.size(), 2 * keptPairs_.capacity()));
+  keptPairs_.assign(pairs.begin(), pairs.end());
+}
+
+BoxColumns BroadPhase::manyColumns(std::uint32_t count) {
+  const std::size_t stride = std::size_t{count} + 7;  // (padding: whole vectors of eight)
+  if (manyColumns_.size() < 4 * stride) manyColumns_.resize(4 * stride);
+  real* const columns = manyColumns_.data();
+  return {columns, columns + stride, columns + 2 * stride, columns + 3 * stride};
+}
+
+void BroadPhase::rememberAll(std::span<const BoundingBox> boxes,
+                             const std::vector<BoxPair>& pairs) {
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  const BoxColumns soa = manyColumns(count);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    soa.lowerX[i] = boxes[i].lower.x;
+    soa.upperX[i] = boxes[i].upper.x;
+    soa.lowerY[i] = boxes[i].lower.y;
+    soa.upperY[i] = boxes[i].upper.y;
+  }
+  keepPairs(pairs);
+  // Room for the rows of as many changed boxes as findPairsAmongMoved() takes.
+  const std::size_t words = (std::size_t{count} + 63) / 64;
+  if (manyRows_.size() < movedLimit(count) * words) manyRows_.resize(movedLimit(count) * words);
+  rememberedCount_ = count;
+}
+
+std::uint32_t BroadPhase::findChanged(std::span<const BoundingBox> boxes,
+                                      std::span<const std::uint64_t> moved) {
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  const std::size_t words = (std::size_t{count} + 63) / 64;
+  changed_.assign(words, 0);
+  const BoxColumns soa = manyColumns(count);
+  const auto differs = [](real a, real b) {
+    return std::bit_cast<Bits>(a) != std::bit_cast<Bits>(b);
+  };
+  std::uint32_t changedCount = 0;
+  for (std::size_t w = 0; w < words; ++w) {
+    std::uint64_t changed = 0;
+    for (std::uint64_t bits = moved[w]; bits != 0; bits &= bits - 1) {
+      const int bit = std::countr_zero(bits);
+      const std::size_t m = 64 * w + static_cast<std::size_t>(bit);
+      const BoundingBox& box = boxes[m];
+      const bool different =
+          differs(box.lower.x, soa.lowerX[m]) | differs(box.upper.x, soa.upperX[m]) |
+          differs(box.lower.y, soa.lowerY[m]) | differs(box.upper.y, soa.upperY[m]);
+      changed |= std::uint64_t{different} << bit;
+    }
+    changed_[w] = changed;
+    changedCount += static_cast<std::uint32_t>(std::popcount(changed));
+  }
+  return changedCount;
+}
+
+void BroadPhase::findPairsAmongMoved(std::span<const BoundingBox> boxes,
+                                     std::vector<BoxPair>& pairs) {
+  const auto count = static_cast<std::uint32_t>(boxes.size());
+  const std::size_t words = (std::size_t{count} + 63) / 64;
+  const std::uint64_t* const movedBits = changed_.data();
+  // The changed boxes' corners by coordinate (the others' are as the last call left them).
+  const BoxColumns soa = manyColumns(count);
+  for (std::size_t w = 0; w < words; ++w) {
+    for (std::uint64_t bits = movedBits[w]; bits != 0; bits &= bits - 1) {
+      const std::size_t m = 64 * w + static_cast<std::size_t>(std::countr_zero(bits));
+      soa.lowerX[m] = boxes[m].lower.x;
+      soa.upperX[m] = boxes[m].upper.x;
+      soa.lowerY[m] = boxes[m].lower.y;
+      soa.upperY[m] = boxes[m].upper.y;
+    }
+  }
+  // The pairs of two unchanged boxes are the last call's, in its order.
+  const auto isMoved = [movedBits](std::uint32_t i) { return (movedBits[i / 64] >> (i % 64)) & 1; };
+  for (const BoxPair& pair : keptPairs_)
+    if ((isMoved(pair.first) | isMoved(pair.second)) == 0) pairs.push_back(pair);
+  // Then each changed box against every box: its row, less itself, the padding, and the changed
+  // boxes below it (whose rows gave those pairs).
+  overlapRows(boxes.data(), ManyMovedRows(movedBits, words, manyRows_.data()), soa, count);
+  const std::uint64_t* row = manyRows_.data();
+  for (std::size_t w = 0; w < words; ++w) {
+    for (std::uint64_t bits = movedBits[w]; bits != 0; bits &= bits - 1, row += words) {
+      const auto bit = static_cast<std::uint32_t>(std::countr_zero(bits));
+      const auto m = static_cast<std::uint32_t>(64 * w + bit);
+      for (std::size_t v = 0; v <= w; ++v) {  // boxes up to m: pairs (j, m)
+        std::uint64_t hits = row[v] & ~movedBits[v];
+        if (v == w) hits &= ~above(bit) & lowBits(count - static_cast<std::uint32_t>(64 * v));
+        for (; hits != 0; hits &= hits - 1)
+          pairs.push_back({static_cast<std::uint32_t>(64 * v + std::countr_zero(hits)), m});
+      }
+      for (std::size_t v = w; v < words; ++v) {  // boxes above m: pairs (m, j)
+        std::uint64_t hits = row[v] & lowBits(count - static_cast<std::uint32_t>(64 * v));
+        if (v == w) hits &= above(bit);
+        for (; hits != 0; hits &= hits - 1)
+          pairs.push_back({m, static_cast<std::uint32_t>(64 * v + std::countr_zero(hits))});
+      }
+    }
+  }
 }
 
 }  // namespace thyrix

@@ -137,6 +137,7 @@ void Simulator::reserveContacts(std::size_t count) {
   if (previousPairs_.size() < count) previousPairs_.resize(count);
   objectContacts_.reserve(2 * count);
   pairs_.reserve(count);
+  broadPhase_.reservePairs(count);
   rows_.reserve(count);
   islands_.reserve(objects.size(), count);
   baraff_.reserve(
