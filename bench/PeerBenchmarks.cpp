@@ -159,8 +159,8 @@ void report(benchmark::State& state, const Measure& m, std::uint64_t hash) {
 }
 
 template <class Scene, class... Args>
-void arena(benchmark::State& state, const Config& config, Args... args) {
-  const ArenaLayout layout = arenaLayout(20, config.seed);
+void arena(benchmark::State& state, const Config& config, int balls, Args... args) {
+  const ArenaLayout layout = arenaLayout(balls, config.seed);
   for (auto _ : state) {
     Scene scene(layout, args...);
     const Measure m = run(scene, config.arenaSteps, config.arenaSampleEvery);
@@ -341,14 +341,21 @@ void registerAll(const Config& config) {
   const auto baraff = ContactSolverKind::Baraff;
   const auto gaussSeidel = ContactSolverKind::GaussSeidel;
 
-  add("arena/thyrix", [=](benchmark::State& s) { arena<ThyrixArena>(s, config, baraff); });
-  add("arena/thyrix_gs", [=](benchmark::State& s) { arena<ThyrixArena>(s, config, gaussSeidel); });
+  // The arena (20 balls), then more crowded ones: how the lead holds as a world grows,
+  // most of it at rest.
+  for (const int balls : {20, 80, 160}) {
+    const std::string scene = balls == 20 ? "arena" : "arena" + std::to_string(balls);
+    add(scene + "/thyrix",
+        [=](benchmark::State& s) { arena<ThyrixArena>(s, config, balls, baraff); });
+    add(scene + "/thyrix_gs",
+        [=](benchmark::State& s) { arena<ThyrixArena>(s, config, balls, gaussSeidel); });
 #ifdef THYRIX_HAVE_BOX2D
-  add("arena/box2d", [=](benchmark::State& s) { arena<Box2DArena>(s, config); });
+    add(scene + "/box2d", [=](benchmark::State& s) { arena<Box2DArena>(s, config, balls); });
 #endif
 #ifdef THYRIX_HAVE_CHIPMUNK
-  add("arena/chipmunk", [=](benchmark::State& s) { arena<ChipmunkArena>(s, config); });
+    add(scene + "/chipmunk", [=](benchmark::State& s) { arena<ChipmunkArena>(s, config, balls); });
 #endif
+  }
 #ifdef THYRIX_HAVE_SPHERUS
   add("spherus/thyrix", [=](benchmark::State& s) { spherus(s, config); });
 #endif

@@ -19,7 +19,8 @@ ENGINE_TITLES = {
     "box2d": "Box2D 2.4.1",
     "chipmunk": "Chipmunk 7.0.3",
 }
-SCENES = ["arena", "spherus", "pile1000", "pile10000", "chain10", "chain100", "chain1000"]
+SCENES = ["arena", "arena80", "arena160", "spherus", "pile1000", "pile10000", "chain10",
+          "chain100", "chain1000"]
 
 
 def load(path):
