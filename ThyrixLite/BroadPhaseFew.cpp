@@ -253,7 +253,8 @@ void BroadPhase::findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint
     // Padded to whole vectors of eight (the rows mask the padding out).
     columns_.resize(4 * (smallCount + 7));
   }
-  if (!remembered) moved = count == 0 ? 0 : ~std::uint64_t{0} >> (64 - count);
+  // (Bits from count on are no box: ignored.)
+  moved = remembered ? moved & lowBits(count) : count == 0 ? 0 : ~std::uint64_t{0} >> (64 - count);
   // The corners by coordinate (unmoved boxes are as stored by the last call).
   const std::size_t stride = smallCount + 7;
   const BoxColumns soa{columns_.data(), columns_.data() + stride, columns_.data() + 2 * stride,
@@ -338,10 +339,14 @@ std::uint32_t BroadPhase::findChanged(std::span<const BoundingBox> boxes,
   const auto differs = [](real a, real b) {
     return std::bit_cast<Bits>(a) != std::bit_cast<Bits>(b);
   };
+  const std::uint32_t limit = movedLimit(count);
   std::uint32_t changedCount = 0;
   for (std::size_t w = 0; w < words; ++w) {
     std::uint64_t changed = 0;
-    for (std::uint64_t bits = moved[w]; bits != 0; bits &= bits - 1) {
+    // (Bits from count on, in the last word, are no box: ignored.)
+    const std::uint64_t flagged =
+        w + 1 < words ? moved[w] : moved[w] & lowBits(count - static_cast<std::uint32_t>(64 * w));
+    for (std::uint64_t bits = flagged; bits != 0; bits &= bits - 1) {
       const int bit = std::countr_zero(bits);
       const std::size_t m = 64 * w + static_cast<std::size_t>(bit);
       const BoundingBox& box = boxes[m];
@@ -352,6 +357,7 @@ std::uint32_t BroadPhase::findChanged(std::span<const BoundingBox> boxes,
     }
     changed_[w] = changed;
     changedCount += static_cast<std::uint32_t>(std::popcount(changed));
+    if (changedCount > limit) break;  // too many: every pair will be tested (a pile)
   }
   return changedCount;
 }
