@@ -225,7 +225,8 @@ void BroadPhase::findPairsAboveFew(std::span<const BoundingBox> boxes,
   // flagged boxes compared with the last call's): not by the flags, so that the path, and the
   // order of the pairs, depend on the boxes alone (a simulator without rest skipping flags
   // every box, and must find the same pairs in the same order).
-  if (!moved.empty() && rememberedCount_ == count) {
+  // (A span too short to flag every box is no promise: every pair is tested.)
+  if (moved.size() >= (std::size_t{count} + 63) / 64 && rememberedCount_ == count) {
     const std::uint32_t changed = findChanged(boxes, moved);
     if (changed <= movedLimit(count)) {
       findPairsAmongMoved(boxes, pairs);

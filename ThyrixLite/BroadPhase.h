@@ -37,10 +37,13 @@ struct BoxColumns {
 /// boxes). Both grids give the same pairs in the same order; the sweep gives them in its own.
 /// A box whose centre is NaN, infinite, or more than 2^62 cells from the origin is oversized
 /// too: any box is accepted, and one with a NaN corner overlaps nothing (BoundingBox::overlaps).
+/// Above smallCount boxes too, a call told which boxes moved, when few of them changed, tests
+/// only those against every box and keeps the other pairs of the last call (findPairs()).
 ///
-/// The output order depends only on the boxes of this call and of the earlier ones (findPairs()
-/// with flags), so runs are reproducible. Buffers are kept
-/// between calls: once warmed up with as many boxes, finding pairs allocates nothing.
+/// The output order depends only on the boxes of this call and of the earlier ones, and on
+/// which of these calls passed flags (not on the flags themselves), so runs are reproducible.
+/// Buffers are kept between calls: once warmed up with as many boxes, finding pairs allocates
+/// nothing.
 class BroadPhase {
  public:
   /// Up to this many boxes, every pair is tested directly (and remembered, see above).
@@ -50,22 +53,24 @@ class BroadPhase {
   /// up to smallCount boxes.
   void findPairs(std::span<const BoundingBox> boxes, std::vector<BoxPair>& pairs);
 
-  /// The same pairs as findPairs(boxes, pairs), faster when few boxes moved: a box whose bit in
-  /// @p moved is 0 (bit `i % 64` of word `i / 64` for box i; the bits from the box count on are
-  /// ignored) is promised to be the same as in the last call (same index, same corners), so
-  /// its overlaps with other such boxes are not tested again. The promise is used when the
-  /// last call had as many boxes, and:
-  /// - up to smallCount boxes, when the last call was told which moved (this overload): the
-  ///   pairs then come in the same order as findPairs(boxes, pairs);
+  /// The same pairs as findPairs(boxes, pairs) (but for never-paired pairs, which only the
+  /// sweep leaves out), faster when few boxes moved: a box whose bit in @p moved is 0 (bit
+  /// `i % 64` of word `i / 64` for box i; @p moved has a word for every 64 boxes, or fewer for
+  /// no promise at all; the bits from the box count on are ignored) is promised to be the same
+  /// as in the last call (same index, same corners), so its overlaps with other such boxes
+  /// are not tested again. The promise is used when the last call, with flags or without, had
+  /// as many boxes, and:
+  /// - up to smallCount boxes: the pairs then come in the same order as findPairs(boxes, pairs);
   /// - above, when the last call's pairs were complete (not a sweep that left out never-paired
   ///   pairs) and at most movedLimit(count) of the flagged boxes differ from the last call's,
   ///   bit for bit. Each such box is then tested against every box, and the pairs come in
   ///   another order than a full call's: the last call's pairs of two unchanged boxes in their
   ///   order, then the changed boxes' pairs, by changed box, then by the other box's index. A
-  ///   box flagged but unchanged is as if not flagged: the order depends on the boxes of this
-  ///   call and of the earlier ones, never on the flags (a simulator without rest skipping
-  ///   flags every box, and finds the same pairs in the same order). A world where few bodies
-  ///   move keeps its pairs in the same order from step to step.
+  ///   box flagged but unchanged is as if not flagged: when every call passes flags, the order
+  ///   depends on the boxes of this call and of the earlier ones, not on which were flagged (a
+  ///   simulator without rest skipping flags every box, and finds the same pairs in the same
+  ///   order). A call without flags is a full call, and starts the order afresh. A world where
+  ///   few bodies move keeps its pairs in the same order from step to step.
   ///
   /// Otherwise every pair is tested.
   /// With @p extents not null, the boxes' SweepAndPrune::Extents, gathered by the caller
@@ -78,8 +83,8 @@ class BroadPhase {
   void reservePairs(std::size_t count) { keptPairs_.reserve(count); }
 
   /// Pairs the caller drops anyway, which the sweep then leaves out of its output
-  /// (SweepAndPrune::setNeverPaired(), same bits, same conditions); the few-box test and the
-  /// grid still report them.
+  /// (SweepAndPrune::setNeverPaired(), same bits, same conditions); the few-box test, the grid
+  /// and the test of changed boxes still report them.
   void setNeverPaired(std::span<const std::uint64_t> bits) {
     sweep_.setNeverPaired(bits);
     neverPairedCount_ = bits.size();
@@ -91,7 +96,7 @@ class BroadPhase {
   /// up to a quarter of the boxes, at most 64 (measured: the arena of 160 balls, 100000 steps,
   /// 9% fewer instructions than with at most a sixteenth, no fewer with half).
   static constexpr std::uint32_t movedLimit(std::uint32_t count) {
-    return std::max(4u, std::min(64u, count / 4));
+    return std::min(64u, count / 4);
   }
 
   /// With false the grid always hashes its cells (for tests comparing the two grids).
@@ -130,7 +135,8 @@ class BroadPhase {
   void rememberAll(std::span<const BoundingBox> boxes, const std::vector<BoxPair>& pairs);
   /// Copies @p pairs to keptPairs_.
   void keepPairs(const std::vector<BoxPair>& pairs);
-  /// The corners of @p count boxes (more than smallCount) by coordinate, in manyColumns_.
+  /// Where the corners of @p count boxes (more than smallCount) are kept by coordinate: in
+  /// manyColumns_, sized for them (not filled).
   BoxColumns manyColumns(std::uint32_t count);
   /// More than smallCount boxes: the sweep or the grid.
   void findPairsAmongMany(std::span<const BoundingBox> boxes, const SweepAndPrune::Extents* extents,

@@ -336,8 +336,8 @@ std::uint32_t BroadPhase::findChanged(std::span<const BoundingBox> boxes,
   const std::size_t words = (std::size_t{count} + 63) / 64;
   changed_.assign(words, 0);
   const BoxColumns soa = manyColumns(count);
-  const auto differs = [](real a, real b) {
-    return std::bit_cast<Bits>(a) != std::bit_cast<Bits>(b);
+  const auto difference = [](real a, real b) {
+    return std::bit_cast<Bits>(a) ^ std::bit_cast<Bits>(b);
   };
   const std::uint32_t limit = movedLimit(count);
   std::uint32_t changedCount = 0;
@@ -351,8 +351,8 @@ std::uint32_t BroadPhase::findChanged(std::span<const BoundingBox> boxes,
       const std::size_t m = 64 * w + static_cast<std::size_t>(bit);
       const BoundingBox& box = boxes[m];
       const bool different =
-          differs(box.lower.x, soa.lowerX[m]) | differs(box.upper.x, soa.upperX[m]) |
-          differs(box.lower.y, soa.lowerY[m]) | differs(box.upper.y, soa.upperY[m]);
+          (difference(box.lower.x, soa.lowerX[m]) | difference(box.upper.x, soa.upperX[m]) |
+           difference(box.lower.y, soa.lowerY[m]) | difference(box.upper.y, soa.upperY[m])) != 0;
       changed |= std::uint64_t{different} << bit;
     }
     changed_[w] = changed;

@@ -20,6 +20,7 @@
 namespace thyrix {
 namespace {
 
+using test::box;
 using test::bruteForce;
 using test::Pair;
 using test::randomBoxes;
@@ -92,28 +93,47 @@ TEST(BroadPhaseMoved, FewChangedBoxesAmongManyGiveEveryPair) {
   }
 }
 
+/// The pairs of the changed boxes of @p changed, in the documented order: by changed box, then
+/// by the other box's index, each pair once (a changed box below gave it already).
+std::vector<Pair> changedPairs(const std::vector<BoundingBox>& boxes,
+                               const std::vector<std::uint32_t>& changed) {
+  std::vector<Pair> pairs;
+  for (const std::uint32_t m : changed) {  // (increasing)
+    for (std::uint32_t j = 0; j < boxes.size(); ++j) {
+      const bool changedBelow =
+          j < m && std::find(changed.begin(), changed.end(), j) != changed.end();
+      if (j == m || changedBelow || !boxes[m].overlaps(boxes[j])) continue;
+      pairs.emplace_back(std::min(m, j), std::max(m, j));
+    }
+  }
+  return pairs;
+}
+
 TEST(BroadPhaseMoved, KeepsTheOrderOfThePairsOfUnchangedBoxes) {
-  std::vector<BoundingBox> boxes = randomBoxes(7, 300, 0, 30);
+  std::vector<BoundingBox> boxes = randomBoxes(7, 300, 0, 12);  // crowded: many neighbours
   BroadPhase broadPhase;
   std::vector<BoxPair> pairs;
   broadPhase.findPairs(boxes, allFlagged(boxes.size()), pairs);
   const std::vector<Pair> before = inOrder(pairs);
-  // Box 10 is moved onto box 20: its old pairs go, the rest keep their order, and its new
-  // pairs come last, by the other box's index.
-  const Vector2 shift = boxes[20].lower - boxes[10].lower;
-  boxes[10] = {boxes[10].lower + shift, boxes[10].upper + shift};
+  // Boxes 10 and 130 moved onto boxes 200 and 20: their old pairs go, the rest keep their
+  // order, and their new pairs come last, box 10's first, each by the other box's index.
+  for (const auto& [moving, onto] : {std::pair{10u, 200u}, std::pair{130u, 20u}}) {
+    const Vector2 shift = boxes[onto].lower - boxes[moving].lower + vec(0.05, 0.05);
+    boxes[moving] = {boxes[moving].lower + shift, boxes[moving].upper + shift};
+  }
   std::vector<std::uint64_t> moved((boxes.size() + 63) / 64, 0);
-  moved[0] = std::uint64_t{1} << 10;
+  flag(moved, 10);
+  flag(moved, 130);
   broadPhase.findPairs(boxes, moved, pairs);
   std::vector<Pair> expected;
   for (const Pair& p : before)
-    if (p.first != 10 && p.second != 10) expected.push_back(p);
-  for (const Pair& p : bruteForce(boxes))
-    if (p.first == 10 || p.second == 10) expected.push_back(p);
+    if (p.first != 10 && p.second != 10 && p.first != 130 && p.second != 130) expected.push_back(p);
+  const std::vector<Pair> added = changedPairs(boxes, {10, 130});
+  EXPECT_GT(added.size(), 6u);  // several neighbours each, below and above
+  expected.insert(expected.end(), added.begin(), added.end());
   EXPECT_EQ(inOrder(pairs), expected);
-  EXPECT_NE(std::find(expected.begin(), expected.end(), Pair{10, 20}), expected.end());
   // Unchanged boxes, flagged or not: the same sequence again.
-  std::vector<Pair> again = inOrder(pairs);
+  const std::vector<Pair> again = inOrder(pairs);
   broadPhase.findPairs(boxes, allFlagged(boxes.size()), pairs);
   EXPECT_EQ(inOrder(pairs), again);
 }
@@ -181,6 +201,89 @@ TEST(BroadPhaseMoved, ADifferentCountIsTestedWhole) {
   boxes[0] = boxes[1];  // moved, not flagged
   broadPhase.findPairs(boxes, std::vector<std::uint64_t>((boxes.size() + 63) / 64, 0), pairs);
   EXPECT_EQ(sortedPairs(pairs), bruteForce(boxes));
+}
+
+TEST(BroadPhaseMoved, FlagBitsPastTheCountAreIgnored) {
+  // Garbage in the last word past the box count, and a word too many: the same pairs in the
+  // same order as with clean flags, for few boxes and for many.
+  for (const std::uint32_t count : {30u, 150u}) {
+    SCOPED_TRACE(::testing::Message() << count << " boxes");
+    std::vector<BoundingBox> boxes = randomBoxes(count, static_cast<int>(count), 0, 12);
+    MTRandom random(count + 1);
+    BroadPhase clean;
+    BroadPhase dirty;
+    std::vector<BoxPair> cleanPairs;
+    std::vector<BoxPair> dirtyPairs;
+    for (int step = 0; step < 30; ++step) {
+      const std::vector<std::uint64_t> moved = moveSome(boxes, random, 1 + step % 4, 0);
+      std::vector<std::uint64_t> garbage = moved;
+      garbage.back() |= ~std::uint64_t{0} << (count % 64);
+      garbage.push_back(~std::uint64_t{0});
+      clean.findPairs(boxes, moved, cleanPairs);
+      dirty.findPairs(boxes, garbage, dirtyPairs);
+      ASSERT_EQ(sortedPairs(dirtyPairs), bruteForce(boxes)) << "step " << step;
+      ASSERT_EQ(inOrder(dirtyPairs), inOrder(cleanPairs)) << "step " << step;
+    }
+  }
+}
+
+TEST(BroadPhaseMoved, PairsAreKeptOnlyFromACompleteCall) {
+  // A pile remembered from the grid, then a line that the sweep takes with never-paired bits
+  // (leaving those pairs out): a call with nothing moved must not bring back the pile's pairs,
+  // nor make up the left-out ones.
+  std::vector<BoundingBox> pile;
+  std::vector<BoundingBox> line;
+  for (int i = 0; i < 100; ++i) {
+    pile.push_back(box(i % 10, i / 10, i % 10 + 1.2, i / 10 + 1.2));
+    line.push_back(box(i, 0, i + 1.5, 0.25));
+  }
+  const std::vector<std::uint64_t> never(100, 1);  // each box never pairs with the next
+  BroadPhase broadPhase;
+  broadPhase.setNeverPaired(never);
+  std::vector<BoxPair> pairs;
+  broadPhase.findPairs(pile, allFlagged(100), pairs);
+  EXPECT_EQ(sortedPairs(pairs), bruteForce(pile));
+  broadPhase.findPairs(line, allFlagged(100), pairs);
+  const std::vector<Pair> swept = inOrder(pairs);
+  EXPECT_EQ(swept.size(), 0u);  // (a box meets only its neighbours: all left out)
+  broadPhase.findPairs(line, std::vector<std::uint64_t>(2, 0), pairs);
+  EXPECT_EQ(inOrder(pairs), swept);
+}
+
+TEST(BroadPhaseMoved, AHistoryOfCountsPathsAndCallsGivesEveryPair) {
+  // Counts crossing the all-pairs limit back and forth, a line that the sweep takes (without
+  // never-paired bits: its pairs are kept), boxes around the origin (the columns' padding is
+  // zero there), and calls without flags in between: every call finds every pair, and a
+  // broad phase told that every box moved gives the same sequence as one told which did.
+  std::vector<std::vector<BoundingBox>> layouts = {randomBoxes(41, 60, 0, 10, vec(-5, -5)),
+                                                   randomBoxes(43, 40, 0, 8, vec(-4, -4)),
+                                                   randomBoxes(47, 120, 1, 14, vec(-7, -7))};
+  std::vector<BoundingBox> line;
+  for (int i = 0; i < 90; ++i) line.push_back(box(i - 45, -0.1, i - 43.5, 0.15));
+  layouts.push_back(line);
+  MTRandom random(53);
+  BroadPhase flagged;
+  BroadPhase everything;
+  std::vector<BoxPair> pairs;
+  std::vector<BoxPair> everyPairs;
+  for (int round = 0; round < 12; ++round) {
+    std::vector<BoundingBox>& boxes = layouts[round % layouts.size()];
+    SCOPED_TRACE(::testing::Message() << "round " << round << ", " << boxes.size() << " boxes");
+    for (int step = 0; step < 15; ++step) {
+      if (step == 7) {  // a call without flags: a full call for both
+        flagged.findPairs(boxes, pairs);
+        everything.findPairs(boxes, everyPairs);
+      } else {
+        // (The first call of a round flags everything: the count changed since the last.)
+        const std::vector<std::uint64_t> moved =
+            step == 0 ? allFlagged(boxes.size()) : moveSome(boxes, random, 1 + step % 5, 1);
+        flagged.findPairs(boxes, moved, pairs);
+        everything.findPairs(boxes, allFlagged(boxes.size()), everyPairs);
+      }
+      ASSERT_EQ(sortedPairs(pairs), bruteForce(boxes)) << "step " << step;
+      ASSERT_EQ(inOrder(pairs), inOrder(everyPairs)) << "step " << step;
+    }
+  }
 }
 
 TEST(BroadPhaseMoved, WarmedUpCallsAllocateNothing) {

@@ -23,6 +23,7 @@
 namespace thyrix {
 namespace {
 
+using test::box;
 using test::bruteForce;
 using test::Pair;
 using test::randomBoxes;
@@ -30,8 +31,6 @@ using test::shuffleBoxes;
 using test::sortedPairs;
 
 using test::vec;
-
-BoundingBox box(double x0, double y0, double x1, double y1) { return {vec(x0, y0), vec(x1, y1)}; }
 
 /// Checks the broad phase against brute force: the same set, each pair once.
 void expectSameAsBruteForce(const std::vector<BoundingBox>& boxes,

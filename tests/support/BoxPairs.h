@@ -32,6 +32,11 @@ inline std::vector<Pair> sortedPairs(const std::vector<BoxPair>& found) {
 /// A vector of reals from doubles.
 constexpr Vector2 vec(double x, double y) { return {real(x), real(y)}; }
 
+/// The box from (@p x0, @p y0) to (@p x1, @p y1).
+inline BoundingBox box(double x0, double y0, double x1, double y1) {
+  return {vec(x0, y0), vec(x1, y1)};
+}
+
 /// Every overlapping or touching pair, by checking all pairs (written independently of
 /// BoundingBox::overlaps), sorted.
 inline std::vector<Pair> bruteForce(const std::vector<BoundingBox>& boxes) {
