@@ -242,6 +242,15 @@ void overlapRows(const BoundingBox* boxes, Rows rows, const BoxColumns& soa, std
 /// Bits above @p i.
 std::uint64_t above(std::uint32_t i) { return ~std::uint64_t{0} << i << 1; }
 
+/// Stores the corners of @p box as box @p i of the columns @p soa.
+THYRIX_ALWAYS_INLINE void storeCorners(const BoxColumns& soa, std::size_t i,
+                                       const BoundingBox& box) {
+  soa.lowerX[i] = box.lower.x;
+  soa.upperX[i] = box.upper.x;
+  soa.lowerY[i] = box.lower.y;
+  soa.upperY[i] = box.upper.y;
+}
+
 }  // namespace
 
 void BroadPhase::findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint64_t moved,
@@ -253,24 +262,21 @@ void BroadPhase::findPairsAmongFew(std::span<const BoundingBox> boxes, std::uint
     // Padded to whole vectors of eight (the rows mask the padding out).
     columns_.resize(4 * (smallCount + 7));
   }
-  // (Bits from count on are no box: ignored.)
-  moved = remembered ? moved & lowBits(count) : count == 0 ? 0 : ~std::uint64_t{0} >> (64 - count);
+  // Not remembered: every box moved. (Bits from count on are no box: ignored.)
+  const std::uint64_t inBoxes = lowBits(count);
+  moved = remembered ? moved & inBoxes : inBoxes;
   // The corners by coordinate (unmoved boxes are as stored by the last call).
   const std::size_t stride = smallCount + 7;
   const BoxColumns soa{columns_.data(), columns_.data() + stride, columns_.data() + 2 * stride,
                        columns_.data() + 3 * stride};
   for (std::uint64_t bits = moved; bits != 0; bits &= bits - 1) {
     const auto m = static_cast<std::uint32_t>(std::countr_zero(bits));
-    soa.lowerX[m] = boxes[m].lower.x;
-    soa.upperX[m] = boxes[m].upper.x;
-    soa.lowerY[m] = boxes[m].lower.y;
-    soa.upperY[m] = boxes[m].upper.y;
+    storeCorners(soa, m, boxes[m]);
   }
   // Only rows that had pairs, moved boxes, and boxes below a moved box that now meets them can
   // change; every other row stays empty.
   std::uint64_t visit = (remembered ? rowsWithPairs_ : 0) | moved;
   overlapRows(boxes.data(), FewMovedRows(moved, movedRows_.data()), soa, count);
-  const std::uint64_t inBoxes = lowBits(count);
   for (std::uint64_t bits = moved; bits != 0; bits &= bits - 1) {
     const auto m = static_cast<std::uint32_t>(std::countr_zero(bits));
     movedRows_[m] &= inBoxes & ~(std::uint64_t{1} << m);
@@ -318,10 +324,7 @@ void BroadPhase::rememberAll(std::span<const BoundingBox> boxes,
   const auto count = static_cast<std::uint32_t>(boxes.size());
   const BoxColumns soa = manyColumns(count);
   for (std::uint32_t i = 0; i < count; ++i) {
-    soa.lowerX[i] = boxes[i].lower.x;
-    soa.upperX[i] = boxes[i].upper.x;
-    soa.lowerY[i] = boxes[i].lower.y;
-    soa.upperY[i] = boxes[i].upper.y;
+    storeCorners(soa, i, boxes[i]);
   }
   keepPairs(pairs);
   // Room for the rows of as many changed boxes as findPairsAmongMoved() takes.
@@ -372,10 +375,7 @@ void BroadPhase::findPairsAmongMoved(std::span<const BoundingBox> boxes,
   for (std::size_t w = 0; w < words; ++w) {
     for (std::uint64_t bits = movedBits[w]; bits != 0; bits &= bits - 1) {
       const std::size_t m = 64 * w + static_cast<std::size_t>(std::countr_zero(bits));
-      soa.lowerX[m] = boxes[m].lower.x;
-      soa.upperX[m] = boxes[m].upper.x;
-      soa.lowerY[m] = boxes[m].lower.y;
-      soa.upperY[m] = boxes[m].upper.y;
+      storeCorners(soa, m, boxes[m]);
     }
   }
   // The pairs of two unchanged boxes are the last call's, in its order.
@@ -392,7 +392,7 @@ void BroadPhase::findPairsAmongMoved(std::span<const BoundingBox> boxes,
       const auto m = static_cast<std::uint32_t>(64 * w + bit);
       for (std::size_t v = 0; v <= w; ++v) {  // boxes up to m: pairs (j, m)
         std::uint64_t hits = row[v] & ~movedBits[v];
-        if (v == w) hits &= ~above(bit) & lowBits(count - static_cast<std::uint32_t>(64 * v));
+        if (v == w) hits &= ~above(bit);  // (up to m itself, removed as a changed box)
         for (; hits != 0; hits &= hits - 1)
           pairs.push_back({static_cast<std::uint32_t>(64 * v + std::countr_zero(hits)), m});
       }
