@@ -381,8 +381,13 @@ void SimulationFrame::onSnapshot(const WorldSnapshot& s) {
   SetStatusText(wxString::Format("Step %" PRIu64 "  (%.2f s)", s.step, s.time), 0);
   SetStatusText(s.running ? wxString::Format("%.0f steps/s", s.stepsPerSecond) : wxString("Paused"),
                 1);
-  SetStatusText(wxString::Format("%zu contacts", s.contacts), 2);
-  SetStatusText(s.error.empty() ? wxString(solverName(s.solver)) : wxString::FromUTF8(s.error), 3);
+  // A world that is not a Simulator has no contacts and no solver: its fields stay empty.
+  SetStatusText(s.isSimulator ? wxString::Format("%zu contacts", s.contacts) : wxString(), 2);
+  SetStatusText(!s.error.empty() ? wxString::FromUTF8(s.error)
+                : s.isSimulator  ? wxString(solverName(s.solver))
+                                 : wxString(),
+                3);
+  if (solverChoice_->IsEnabled() != s.isSimulator) solverChoice_->Enable(s.isSimulator);
 }
 
 void SimulationFrame::onAutomationTimer(wxTimerEvent&) {

@@ -22,8 +22,9 @@ namespace thyrix {
 class ActivationPanel;
 class WorldView;
 
-/// A window that runs any simulator: give it a SimulationSetup (how to build the world, and
-/// optionally the agent's sensors and effectors) and show it.
+/// A window that runs any World: give it a SimulationSetup (how to build the world, and
+/// optionally the agent's sensors and effectors) and show it. A Simulator's objects can be
+/// dragged and its contacts drawn; another World is stepped and drawn, the solver control off.
 ///
 /// It owns a SimulationRunner (the simulation thread) and shows a WorldView, a side panel of
 /// live activation bars (when the setup has agentSignals), a menu and a toolbar (run/pause,

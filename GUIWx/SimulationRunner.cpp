@@ -128,10 +128,10 @@ void SimulationRunner::threadMain() {
 
     bool stepNow = false;
     const Clock::time_point now = Clock::now();
-    if (simulator_ && pendingSteps_ > 0) {
+    if (world_ && pendingSteps_ > 0) {
       --pendingSteps_;
       stepNow = true;
-    } else if (simulator_ && running_) {
+    } else if (world_ && running_) {
       if (stepsPerSecond_ <= 0) {
         stepNow = true;
       } else if (now >= nextStep_) {
@@ -157,13 +157,14 @@ void SimulationRunner::threadMain() {
       // Nothing to do now: sleep until a command comes, or the next step is due.
       std::unique_lock lock(mutex_);
       const auto woken = [this] { return stop_ || !queue_.empty(); };
-      if (simulator_ && running_ && stepsPerSecond_ > 0)
+      if (world_ && running_ && stepsPerSecond_ > 0)
         wake_.wait_until(lock, nextStep_, woken);
-      else if (!(simulator_ && (running_ || pendingSteps_ > 0)))
+      else if (!(world_ && (running_ || pendingSteps_ > 0)))
         wake_.wait(lock, woken);
     }
   }
-  simulator_.reset();  // the world is destroyed by the thread that built it
+  simulator_ = nullptr;
+  world_.reset();  // the world is destroyed by the thread that built it
 }
 
 void SimulationRunner::drainCommands() {
@@ -188,7 +189,7 @@ void SimulationRunner::setRunning(bool running) {
 void SimulationRunner::apply(const Command& command) {
   switch (command.type) {
     case Command::Type::Run:
-      setRunning(simulator_ != nullptr);
+      setRunning(world_ != nullptr);
       break;
     case Command::Type::Pause:
       setRunning(false);
@@ -196,7 +197,7 @@ void SimulationRunner::apply(const Command& command) {
       break;
     case Command::Type::Step:
       setRunning(false);
-      if (simulator_) ++pendingSteps_;
+      if (world_) ++pendingSteps_;
       break;
     case Command::Type::Reset:
       rebuild();
@@ -217,7 +218,7 @@ void SimulationRunner::apply(const Command& command) {
       break;
     case Command::Type::PauseAt:
       pauseAt_ = command.number;
-      if (pauseAt_ > 0 && simulator_ && simulator_->stepCount() >= pauseAt_) {
+      if (pauseAt_ > 0 && world_ && world_->stepCount() >= pauseAt_) {
         pauseAt_ = 0;
         setRunning(false);
       }
@@ -271,15 +272,18 @@ void SimulationRunner::rebuild() {
   dragging_ = false;
   settling_ = false;
   pendingSteps_ = 0;
-  simulator_.reset();  // free the old world before building the new one
+  simulator_ = nullptr;
+  world_.reset();  // free the old world before building the new one
   ++generation_;
   error_.clear();
   try {
-    simulator_ = setup_.makeWorld();
-    if (!simulator_) throw std::runtime_error("SimulationSetup.makeWorld returned no simulator");
-    simulator_->setContactSolver(solver_);
+    world_ = setup_.makeWorld();
+    if (!world_) throw std::runtime_error("SimulationSetup.makeWorld returned no world");
+    simulator_ = dynamic_cast<Simulator*>(world_.get());
+    if (simulator_) simulator_->setContactSolver(solver_);
   } catch (const std::exception& error) {
-    simulator_.reset();
+    simulator_ = nullptr;
+    world_.reset();
     fail("building the world failed: ", error);
   }
   rateSteps_ = 0;
@@ -296,13 +300,13 @@ void SimulationRunner::fail(const char* what, const std::exception& error) {
 
 void SimulationRunner::step() {
   try {
-    simulator_->advanceTime();
+    world_->advanceTime();  // virtual: a subclass's own per-step logic runs here too
   } catch (const std::exception& error) {
     fail("step failed: ", error);
     return;
   }
   ++rateSteps_;
-  const std::uint64_t steps = simulator_->stepCount();
+  const std::uint64_t steps = world_->stepCount();
   if (pauseAt_ > 0 && steps >= pauseAt_) {
     pauseAt_ = 0;
     setRunning(false);
@@ -333,20 +337,20 @@ void SimulationRunner::publish() {
   // nobody can newly get hold of it, so a use count of one means it is ours alone.
   if (!building_ || building_.use_count() > 1) building_ = std::make_shared<WorldSnapshot>();
   WorldSnapshot& s = *building_;
-  if (simulator_) {
-    s.capture(*simulator_, draw_);
+  if (world_) {
+    s.capture(*world_, draw_);
     s.sensors.clear();
     s.effectors.clear();
     if (setup_.agentSignals) {
       try {
-        const AgentSignals signals = setup_.agentSignals(*simulator_);
+        const AgentSignals signals = setup_.agentSignals(*world_);
         s.sensors.assign(signals.sensors.begin(), signals.sensors.end());
         s.effectors.assign(signals.effectors.begin(), signals.effectors.end());
       } catch (const std::exception& error) {
         fail("reading the agent's signals failed: ", error);
       }
     }
-    const PhysicalObject* body = simulator_->draggedObject();
+    const PhysicalObject* body = simulator_ != nullptr ? simulator_->draggedObject() : nullptr;
     s.dragging = dragging_ && body != nullptr;
     if (s.dragging) {
       s.dragPoint = body->toWorld(dragLocal_);

@@ -1,7 +1,7 @@
 #pragma once
 /// @file SimulationRunner.h
-/// @brief Runs a Simulator in a thread of its own, at a chosen speed or as fast as possible,
-/// and publishes snapshots of it for the window.
+/// @brief Runs a World (a Simulator or any other) in a thread of its own, at a chosen speed or
+/// as fast as possible, and publishes snapshots of it for the window.
 
 #include <GUIWx/SimulationSetup.h>
 #include <GUIWx/WorldSnapshot.h>
@@ -35,10 +35,12 @@ struct DragEvent {
   std::uint64_t stepsSinceRelease = 0;  ///< Settled: steps since the release
 };
 
-/// Owns a simulation thread that builds, steps and destroys the world; nothing else touches the
-/// Simulator (it is not thread-safe). The other threads talk to it through commands, queued
-/// under a mutex and applied by the simulation thread between steps, and read it through
-/// snapshots: after a step the thread captures a WorldSnapshot and swaps it in as latest().
+/// Owns a simulation thread that builds, steps (World::advanceTime(), virtual: a subclass's own
+/// per-step logic runs) and destroys the world; nothing else touches the world (it is not
+/// thread-safe). Dragging and the solver apply to a Simulator only; other worlds ignore them. The
+/// other threads talk to it through commands, queued under a mutex and applied by the simulation
+/// thread between steps, and read it through snapshots: after a step the thread captures a
+/// WorldSnapshot and swaps it in as latest().
 ///
 /// Snapshots are published after every change of state and, while running, at most about 120
 /// times per second, so a fast run spends its time stepping, not drawing. Every public function
@@ -69,7 +71,8 @@ class SimulationRunner {
   void reset();
   /// Steps per second to aim at; 0 (or less) runs as fast as possible.
   void setStepsPerSecond(double stepsPerSecond);
-  /// The contact solver, for this world and the ones reset() builds.
+  /// The contact solver, for this world and the ones reset() builds (when they are
+  /// simulators).
   void setSolver(ContactSolverKind solver);
   /// The overlays drawn into the snapshots.
   void setDrawOptions(const DrawOptions& options);
@@ -77,8 +80,8 @@ class SimulationRunner {
   void pauseAtStep(std::uint64_t step);
 
   /// Grabs object @p object of world @p generation (both as in the snapshot that was picked
-  /// from) at @p grabPoint (m). Ignored if that world is gone, the index is out of range or the
-  /// object is fixed.
+  /// from) at @p grabPoint (m). Ignored if that world is gone or not a Simulator, the index is
+  /// out of range or the object is fixed.
   void startDrag(std::uint64_t generation, std::uint32_t object, Vector2 grabPoint);
   /// Moves the mouse target of the current drag to @p target (m).
   void dragTo(Vector2 target);
@@ -152,7 +155,8 @@ class SimulationRunner {
   std::atomic<ContactSolverKind> solverShown_;
 
   // The simulation thread's own state: touched by no other thread.
-  std::unique_ptr<Simulator> simulator_;
+  std::unique_ptr<World> world_;
+  Simulator* simulator_ = nullptr;  // world_ when it is a Simulator, else null
   std::vector<Command> applying_;
   std::shared_ptr<WorldSnapshot> building_;
   std::uint64_t generation_ = 0;

@@ -5,6 +5,7 @@
 
 #include <ThyrixLite/ContactSolver.h>
 #include <ThyrixLite/Simulator.h>
+#include <ThyrixLite/World.h>
 #include <ThyrixLite/WorldDrawing.h>
 
 #include <cstdint>
@@ -28,12 +29,14 @@ struct SimulationSetup {
   /// The window title.
   std::string title = "Thyrix";
   /// Builds a fresh world: called on the simulation thread at start and at each reset, so
-  /// the world is created, stepped and destroyed by that thread alone. Must return a simulator.
-  std::function<std::unique_ptr<Simulator>()> makeWorld;
+  /// the world is created, stepped and destroyed by that thread alone. Must return a world:
+  /// any World, stepped by its advanceTime() and drawn by its draw(); a Simulator's objects
+  /// can also be dragged with the mouse, and its contacts drawn.
+  std::function<std::unique_ptr<World>()> makeWorld;
   /// Optional: the agent's sensors and effectors, for the side panel (none if empty). Called
   /// on the simulation thread with the current world.
-  std::function<AgentSignals(const Simulator&)> agentSignals;
-  /// Contact solver of every world built (the GUI can change it while running).
+  std::function<AgentSignals(const World&)> agentSignals;
+  /// Contact solver of every Simulator built (the GUI can change it while running).
   ContactSolverKind solver = ContactSolverKind::Baraff;
   /// Steps per second to aim at; 0 runs as fast as possible.
   double stepsPerSecond = 100;
@@ -45,14 +48,12 @@ struct SimulationSetup {
   DrawOptions drawOptions;
 };
 
-/// Adapts a function of the application's own simulator type to SimulationSetup::agentSignals,
+/// Adapts a function of the application's own world type to SimulationSetup::agentSignals,
 /// e.g. `agentSignalsOf<SpherusSimulator>([](const SpherusSimulator& s) { ... })`. The world
-/// passed in is the one built by SimulationSetup::makeWorld, so it must be of type @p World.
-template <class World, class Function>
-std::function<AgentSignals(const Simulator&)> agentSignalsOf(Function function) {
-  return [function](const Simulator& simulator) {
-    return function(static_cast<const World&>(simulator));
-  };
+/// passed in is the one built by SimulationSetup::makeWorld, so it must be of type @p Derived.
+template <class Derived, class Function>
+std::function<AgentSignals(const World&)> agentSignalsOf(Function function) {
+  return [function](const World& world) { return function(static_cast<const Derived&>(world)); };
 }
 
 }  // namespace thyrix

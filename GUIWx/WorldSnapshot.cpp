@@ -9,10 +9,10 @@ namespace {
 // worldBounds() leaves borders out (they are unbounded); a walled arena then fits with its
 // walls just outside the window. Each border's anchor point (Border::r, where the program put
 // it) is taken in too, with a margin, so the walls show.
-BoundingBox viewBounds(const Simulator& simulator) {
-  BoundingBox box = worldBounds(simulator);
+BoundingBox viewBounds(const World& world) {
+  BoundingBox box = worldBounds(world);
   bool anyBorder = false;
-  for (const PhysicalObject& object : simulator.objects)
+  for (const PhysicalObject& object : world.objects)
     for (const Primitive* primitive : object.primitives())
       if (primitive->shapeType() == ShapeType::HalfPlane && std::isfinite(primitive->r.x) &&
           std::isfinite(primitive->r.y)) {
@@ -30,15 +30,18 @@ BoundingBox viewBounds(const Simulator& simulator) {
 
 }  // namespace
 
-void WorldSnapshot::capture(const Simulator& simulator, const DrawOptions& options) {
+void WorldSnapshot::capture(const World& world, const DrawOptions& options) {
   drawing.clear();
-  drawWorld(simulator, drawing, options);
+  drawWorld(world, drawing, options);
 
+  const auto* simulator = dynamic_cast<const Simulator*>(&world);
+  isSimulator = simulator != nullptr;
   shapes.clear();
   std::uint32_t index = 0;
-  for (const PhysicalObject& object : simulator.objects) {
-    // Fixed bodies do not move under the mouse force: they cannot be grabbed.
-    if (!object.fixed) {
+  for (const PhysicalObject& object : world.objects) {
+    // Fixed bodies do not move under the mouse force, and only a simulator pulls a grabbed
+    // object: neither can be grabbed.
+    if (isSimulator && !object.fixed) {
       for (const Primitive* primitive : object.primitives()) {
         const ShapeType type = primitive->shapeType();
         if (type == ShapeType::HalfPlane) continue;
@@ -55,11 +58,11 @@ void WorldSnapshot::capture(const Simulator& simulator, const DrawOptions& optio
     }
     ++index;
   }
-  bounds = viewBounds(simulator);
-  step = simulator.stepCount();
-  time = simulator.time();
-  contacts = simulator.contacts.size();
-  solver = simulator.contactSolver();
+  bounds = viewBounds(world);
+  step = world.stepCount();
+  time = world.time();
+  contacts = isSimulator ? simulator->contacts.size() : 0;
+  if (isSimulator) solver = simulator->contactSolver();
 }
 
 void WorldSnapshot::clearWorld() {
@@ -69,6 +72,7 @@ void WorldSnapshot::clearWorld() {
   step = 0;
   time = 0;
   contacts = 0;
+  isSimulator = false;
   sensors.clear();
   effectors.clear();
   dragging = false;

@@ -10,6 +10,7 @@
 #include <ThyrixLite/ContactSolver.h>
 #include <ThyrixLite/Primitive.h>
 #include <ThyrixLite/Simulator.h>
+#include <ThyrixLite/World.h>
 #include <ThyrixLite/WorldDrawing.h>
 
 #include <cstdint>
@@ -35,7 +36,7 @@ struct WorldSnapshot {
   /// The drawing calls of drawWorld() with the options in force.
   DrawingRecorder drawing;
   /// The circles and capsules of the movable objects, in registration order (later ones are
-  /// drawn on top).
+  /// drawn on top); none when the world is not a Simulator (nothing can be dragged).
   std::vector<PickShape> shapes;
   /// The box the view fits: worldBounds() of the world, widened to take in each border's
   /// anchor point (so the walls of an arena show).
@@ -45,11 +46,13 @@ struct WorldSnapshot {
   std::uint64_t generation = 0;
   /// Publication number, one more per snapshot.
   std::uint64_t serial = 0;
-  /// Steps done (Simulator::stepCount).
+  /// Whether the world is a Simulator (objects can be dragged, contacts are counted and drawn).
+  bool isSimulator = false;
+  /// Steps done (World::stepCount).
   std::uint64_t step = 0;
   /// Simulated time (s).
   double time = 0;
-  /// Contacts of the last step.
+  /// Contacts of the last step (0 for a world that is not a Simulator).
   std::size_t contacts = 0;
   /// Steps per second actually simulated recently (0 while paused).
   double stepsPerSecond = 0;
@@ -68,9 +71,10 @@ struct WorldSnapshot {
   /// Why there is no world or the run stopped (an exception from the factory or a step).
   std::string error;
 
-  /// Fills drawing, shapes, bounds, step, time, contacts and solver from @p simulator, reusing
-  /// the memory of an earlier capture. Reads the simulator only.
-  void capture(const Simulator& simulator, const DrawOptions& options);
+  /// Fills drawing, shapes, bounds, step, time, contacts and solver from @p world (shapes,
+  /// contacts and solver only when it is a Simulator), reusing the memory of an earlier
+  /// capture. Reads the world only.
+  void capture(const World& world, const DrawOptions& options);
   /// Empties the world part (no world: drawing, shapes, counters).
   void clearWorld();
 };

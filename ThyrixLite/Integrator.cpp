@@ -1,4 +1,7 @@
+/// @file Integrator.cpp
+/// @brief Explicit Euler, the default integrator, and its fast loop.
 #include <ThyrixLite/Integrator.h>
+#include <ThyrixLite/Simulator.h>
 #include <Tools/Inlining.h>
 #include <Tools/ProcessorFeatures.h>
 
@@ -29,12 +32,14 @@ THYRIX_ALWAYS_INLINE void integrateInRuns(const ObjectList& objects,
 
 }  // namespace
 
-void Integrator::integrate(const ObjectList& objects, real dt) const {
-  for (PhysicalObject& object : objects) object.integrate(dt);
+void Integrator::integrate(Simulator& simulator, real dt) {
+  for (PhysicalObject& object : simulator.objects) integrateObject(object, dt);
 }
 
+void Integrator::integrateObject(PhysicalObject& object, real dt) { object.integrate(dt); }
+
 void Integrator::integrateExcept(const ObjectList& objects,
-                                 std::span<const std::uint32_t> customObjects, real dt) const {
+                                 std::span<const std::uint32_t> customObjects, real dt) {
 #if defined(THYRIX_AVX_DISPATCH)
   if (processorHasAvx()) {
     integrateInRunsAvx(objects, customObjects, dt);

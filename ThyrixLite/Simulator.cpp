@@ -33,13 +33,14 @@ bool hasDefaultHooks(const PhysicalObject& object) {
 
 }  // namespace
 
-Simulator::Simulator(real timestep) : timestep_(timestep) {
-  requirePositive(timestep, "Simulator.timestep");
-}
+Simulator::Simulator(real timestep)
+    : World(timestep), integrator_(std::make_unique<Integrator>()) {}
 
-void Simulator::setTimestep(real timestep) {
-  requirePositive(timestep, "Simulator.timestep");
-  timestep_ = timestep;
+void Simulator::setIntegrator(std::unique_ptr<Integrator> integrator) {
+  if (!integrator) throw InvalidArgument("Simulator.setIntegrator.integrator", "must not be null");
+  const Integrator& given = *integrator;
+  eulerIntegrator_ = typeid(given) == typeid(Integrator);
+  integrator_ = std::move(integrator);
 }
 
 void Simulator::setGravity(Vector2 gravity) {
@@ -171,9 +172,12 @@ void Simulator::advanceTime() {
   solveContacts();
   if (listsAfter) indexContacts();
   for (const std::uint32_t i : customObjects_) objects[i].control();  // the others do nothing
-  integrator.integrateExcept(objects, customObjects_, timestep_);
-  ++stepCount_;
-  time_ += timestep_;
+  // Phase 8: explicit Euler in its loop without virtual calls, unless replaced.
+  if (eulerIntegrator_)
+    Integrator::integrateExcept(objects, customObjects_, timestep());
+  else
+    integrator_->integrate(*this, timestep());
+  World::advanceTime();
 }
 
 void Simulator::computeDerivativesInGravity() {
@@ -238,7 +242,7 @@ void Simulator::applyMouseForce() {
   Vector2 step = (dragTarget_ - point) * dragResponse;
   const real longest = dragMaxStepFraction * dragMaxStep_;
   if (step.length() > longest) step = step * (longest / step.length());
-  const Vector2 wanted = step / timestep_;
+  const Vector2 wanted = step / timestep();
   // The grabbed point moves at K F for a force F there, K = m^-1 Id + I^-1 q q^T with
   // q = perp(point - r): solve K F = wanted so the point, not the centre, heads to the mouse.
   const Vector2 q = (point - body.r).perpendicular();

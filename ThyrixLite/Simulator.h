@@ -14,6 +14,7 @@
 #include <ThyrixLite/World.h>
 
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -39,26 +40,41 @@ struct StepStatistics {
 /// 1. erase the last step's contacts; 2. detectContacts(); 3. indexContacts();
 /// 4. applyMouseForce(); 5. computeDerivativesWithoutContacts() (each object's, in the gravity
 /// field);
-/// 6. solveContacts(); 7. each object's control(); 8. integrator.integrate().
+/// 6. solveContacts(); 7. each object's control(); 8. integrator().integrate() (explicit
+/// Euler unless setIntegrator() replaced it); then World::advanceTime() counts the step.
 /// In a world of core shapes only (no object with hooks of its own, no articulated agent),
 /// phase 3 runs after phase 6, with the forces: nothing reads the lists in between, and after
 /// the step they are the same.
-/// The phases are public so that a program can run its own variant of the step.
+/// The phases are public so that a program can run its own variant of the step. A subclass
+/// that adds per-step logic (a scripted controller, fitness bookkeeping) overrides
+/// advanceTime() and calls Simulator::advanceTime() from it: console loops and GUIWx's
+/// simulation thread call advanceTime() alike, so the logic runs wherever the world is stepped.
 ///
 /// A simulator owns everything it uses (no global state): worlds in different threads are
 /// independent, and the same scene gives bit-identical runs.
 class Simulator : public World {
  public:
-  /// @throws InvalidArgument naming "Simulator.timestep" unless positive and finite
+  /// A simulator stepped by @p timestep seconds (World::timestep()).
+  /// @throws InvalidArgument naming "World.timestep" unless positive and finite
   explicit Simulator(real timestep = real(0.01));
 
   /// This step's contacts (kept until the next step starts, for drawing).
   ContactList contacts;
-  /// Moves the objects in phase 8.
-  Integrator integrator;
 
-  /// Advances the world by one time step.
-  void advanceTime();
+  /// Advances the world by one time step: the eight phases, then World::advanceTime().
+  void advanceTime() override;
+
+  /// Replaces the integrator that moves the objects in phase 8 (explicit Euler, Integrator
+  /// itself, by default) with @p integrator, from the next step on. The default Euler runs
+  /// its loop without a virtual call per object; any other integrator is called once per step
+  /// through Integrator::integrate().
+  /// @throws InvalidArgument naming "Simulator.setIntegrator.integrator" if it is null (the
+  ///         integrator is then unchanged)
+  void setIntegrator(std::unique_ptr<Integrator> integrator);
+  /// The integrator of phase 8.
+  [[nodiscard]] Integrator& integrator() { return *integrator_; }
+  /// The integrator of phase 8, read-only.
+  [[nodiscard]] const Integrator& integrator() const { return *integrator_; }
 
   /// Phase 1: erases the last step's contacts (kept until now so a GUI can draw them).
   void eraseContacts();
@@ -105,15 +121,6 @@ class Simulator : public World {
   /// allocate nothing. Without it the buffers grow to the largest count
   /// seen (geometrically), after which steps allocate nothing either.
   void reserveContacts(std::size_t count);
-
-  /// The time step (s).
-  [[nodiscard]] real timestep() const { return timestep_; }
-  /// @throws InvalidArgument naming "Simulator.timestep" unless positive and finite
-  void setTimestep(real timestep);
-  /// Steps done so far.
-  [[nodiscard]] std::uint64_t stepCount() const { return stepCount_; }
-  /// Simulated time so far (s).
-  [[nodiscard]] double time() const { return time_; }
 
   /// Sets the world's gravity field @p gravity (m/s), {0, 0} by default: from the next step on,
   /// every movable object of quasistatic mass `m` feels its weight `m * gravity` at its centre
@@ -416,11 +423,10 @@ class Simulator : public World {
   }
   void updateTactileSensors();
 
-  real timestep_;
-  Vector2 gravity_;          // no component -0 (setGravity())
-  bool hasGravity_ = false;  // gravity_ is not {0, 0}
-  std::uint64_t stepCount_ = 0;
-  double time_ = 0;
+  std::unique_ptr<Integrator> integrator_;  // never null
+  bool eulerIntegrator_ = true;             // integrator_ is exactly Integrator: its fast loop
+  Vector2 gravity_;                         // no component -0 (setGravity())
+  bool hasGravity_ = false;                 // gravity_ is not {0, 0}
   ContactSolverKind solverKind_ = ContactSolverKind::Baraff;
   ContactSolverSettings settings_;
   StepStatistics statistics_;

@@ -13,7 +13,7 @@ namespace thyrix {
 void Simulator::solveContacts() {
   statistics_.islands = statistics_.solvedIslands = 0;
   statistics_.gaussSeidelSweeps = statistics_.baraffPivots = statistics_.baraffFallbacks = 0;
-  const real dt = timestep_;
+  const real dt = timestep();
   internal_.clear();
   internalOwner_.clear();
   if (hasMultiBodies_) {

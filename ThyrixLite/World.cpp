@@ -1,3 +1,5 @@
+/// @file World.cpp
+/// @brief Registration of a world's objects, its clock and its drawing.
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixLite/Primitive.h>
 #include <ThyrixLite/World.h>
@@ -5,6 +7,13 @@
 #include <algorithm>
 
 namespace thyrix {
+
+World::World(real timestep) : timestep_(timestep) { requirePositive(timestep, "World.timestep"); }
+
+void World::setTimestep(real timestep) {
+  requirePositive(timestep, "World.timestep");
+  timestep_ = timestep;
+}
 
 void World::draw(GUI& gui) const {
   for (const PhysicalObject& object : objects) object.draw(gui);

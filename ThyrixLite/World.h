@@ -1,11 +1,12 @@
 #pragma once
 /// @file World.h
-/// @brief The set of objects that make up a simulated world.
+/// @brief A process updated in discrete time steps: its objects, its clock and its drawing.
 
 #include <ThyrixLite/ObjectList.h>
 #include <ThyrixLite/PhysicalObject.h>
 
 #include <concepts>
+#include <cstdint>
 #include <memory>
 #include <span>
 
@@ -13,16 +14,42 @@ namespace thyrix {
 
 class GUI;
 
-/// Owns the objects of a world and draws them. Simulator adds time stepping.
+/// A process updated in discrete time steps of timestep() seconds: each advanceTime() call
+/// advances it by one step. It owns the objects it is made of and draws them (or whatever its
+/// draw() shows), so that anything that steps and draws worlds (a console loop, GUIWx's
+/// window) runs any kind of World. Simulator, the physics, is one kind; a program may derive
+/// its own, physical or not.
 class World {
  public:
-  World() = default;
+  /// A world stepped by @p timestep seconds at each advanceTime().
+  /// @throws InvalidArgument naming "World.timestep" unless positive and finite
+  explicit World(real timestep = real(0.01));
   World(const World&) = delete;
   World& operator=(const World&) = delete;
   virtual ~World() = default;
 
   /// The objects, in registration order.
   ObjectList objects;
+
+  /// Advances the world by one time step. World's own only counts the step (stepCount() and
+  /// time() advance); an override updates its world, then calls its base class's
+  /// advanceTime() (a subclass of Simulator: its per-step logic, then Simulator::advanceTime()),
+  /// so that every program that steps the world, console or window, runs that logic.
+  virtual void advanceTime() {
+    ++stepCount_;
+    time_ += static_cast<double>(timestep_);
+  }
+
+  /// The time step (s).
+  [[nodiscard]] real timestep() const { return timestep_; }
+  /// Sets the time step for the next steps.
+  /// @throws InvalidArgument naming "World.timestep" unless positive and finite (the step is
+  ///         then unchanged)
+  void setTimestep(real timestep);
+  /// Steps done so far.
+  [[nodiscard]] std::uint64_t stepCount() const { return stepCount_; }
+  /// Simulated time so far (s): the sum of the steps' time steps.
+  [[nodiscard]] double time() const { return time_; }
 
   /// Takes ownership of @p object and returns it, typed as given.
   ///
@@ -38,7 +65,7 @@ class World {
     return *added;
   }
 
-  /// Draws every object, in registration order.
+  /// Draws the world: World's own draws every object, in registration order.
   virtual void draw(GUI& gui) const;
 
  protected:
@@ -51,6 +78,10 @@ class World {
 
  private:
   void adopt(std::unique_ptr<PhysicalObject> object);
+
+  real timestep_;
+  std::uint64_t stepCount_ = 0;
+  double time_ = 0;
 };
 
 }  // namespace thyrix

@@ -70,8 +70,8 @@ void drawRays(const VisualSensor& eye, GUI& gui) {
   }
 }
 
-void drawSensorOverlays(const Simulator& simulator, GUI& gui, const DrawOptions& options) {
-  for (const PhysicalObject& object : simulator.objects) {
+void drawSensorOverlays(const World& world, GUI& gui, const DrawOptions& options) {
+  for (const PhysicalObject& object : world.objects) {
     if (options.tactile)
       for (const Primitive* primitive : object.primitives())
         if (primitive->tactileSensors().enabled()) drawTactile(*primitive, gui);
@@ -82,11 +82,13 @@ void drawSensorOverlays(const Simulator& simulator, GUI& gui, const DrawOptions&
 
 }  // namespace
 
-void drawWorld(const Simulator& simulator, GUI& gui, const DrawOptions& options) {
-  simulator.draw(gui);
+void drawWorld(const World& world, GUI& gui, const DrawOptions& options) {
+  world.draw(gui);
   if (options.contacts || options.contactForces)
-    for (const GlobalContactInfo& contact : simulator.contacts) drawContact(contact, gui, options);
-  if (options.tactile || options.visualRays) drawSensorOverlays(simulator, gui, options);
+    if (const auto* simulator = dynamic_cast<const Simulator*>(&world))
+      for (const GlobalContactInfo& contact : simulator->contacts)
+        drawContact(contact, gui, options);
+  if (options.tactile || options.visualRays) drawSensorOverlays(world, gui, options);
 }
 
 BoundingBox worldBounds(const World& world) {

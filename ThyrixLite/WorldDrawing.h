@@ -30,10 +30,11 @@ struct DrawOptions {
   bool visualRays = false;
 };
 
-/// Draws every object of @p simulator (World::draw, in registration order), then the overlays
-/// that @p options asks for, from the contacts the last step left in `Simulator::contacts`.
-/// Drawing reads the simulator; it never changes it.
-void drawWorld(const Simulator& simulator, GUI& gui, const DrawOptions& options = {});
+/// Draws @p world (World::draw: by default every object, in registration order), then the
+/// overlays that @p options asks for: the sensors' of its objects, and, when it is a Simulator,
+/// the contacts the last step left in `Simulator::contacts` (other worlds have none). Drawing
+/// reads the world; it never changes it.
+void drawWorld(const World& world, GUI& gui, const DrawOptions& options = {});
 
 /// A box around every object of @p world except borders (which are unbounded), to choose a
 /// view: the union of the objects' bounding boxes, padded on every side by 5% of its larger

@@ -244,7 +244,7 @@ TEST_P(SimulatorTest, AdvanceTimeEndsAsThePhasesInOrder) {
     byHand.computeDerivativesWithoutContacts();
     byHand.solveContacts();
     for (PhysicalObject& object : byHand.objects) object.control();
-    byHand.integrator.integrate(byHand.objects, byHand.timestep());
+    byHand.integrator().integrate(byHand, byHand.timestep());
   }
   ASSERT_GE(stepped.contacts.size(), 64u);
   ASSERT_EQ(stepped.objects.size(), byHand.objects.size());

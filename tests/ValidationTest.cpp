@@ -80,7 +80,7 @@ TEST(ValidationTest, BorderFields) {
 TEST(ValidationTest, SimulatorTimestepConstructor) {
   for (const real dt : {real(0), real(-0.01), kNaN, kInf}) {
     SCOPED_TRACE(dt);
-    EXPECT_EQ(thrownField([&] { Simulator simulator(dt); }), "Simulator.timestep");
+    EXPECT_EQ(thrownField([&] { Simulator simulator(dt); }), "World.timestep");
   }
   EXPECT_EQ(thrownField([] { Simulator simulator(real(0.02)); }), "<no exception>");
 }
@@ -89,7 +89,7 @@ TEST(ValidationTest, SetTimestepKeepsTheOldOne) {
   Simulator simulator(real(0.02));
   for (const real dt : {real(0), real(-0.01), kNaN, kInf}) {
     SCOPED_TRACE(dt);
-    EXPECT_EQ(thrownField([&] { simulator.setTimestep(dt); }), "Simulator.timestep");
+    EXPECT_EQ(thrownField([&] { simulator.setTimestep(dt); }), "World.timestep");
     EXPECT_EQ(simulator.timestep(), real(0.02));
   }
   simulator.setTimestep(real(0.05));
@@ -183,10 +183,10 @@ const std::vector<BadInput>& badInputs() {
        }},
       {"NullObject", "World.registerObject.object",
        [](TestWorld& w) { w.simulator.registerObject(std::unique_ptr<Circle>()); }},
-      {"SetTimestepZero", "Simulator.timestep", [](TestWorld& w) { w.simulator.setTimestep(0); }},
-      {"SetTimestepNegative", "Simulator.timestep",
+      {"SetTimestepZero", "World.timestep", [](TestWorld& w) { w.simulator.setTimestep(0); }},
+      {"SetTimestepNegative", "World.timestep",
        [](TestWorld& w) { w.simulator.setTimestep(real(-0.01)); }},
-      {"SetTimestepNaN", "Simulator.timestep", [](TestWorld& w) { w.simulator.setTimestep(kNaN); }},
+      {"SetTimestepNaN", "World.timestep", [](TestWorld& w) { w.simulator.setTimestep(kNaN); }},
       {"StartDragUnregisteredObject", "Simulator.startDrag.object",
        [](TestWorld& w) {
          Circle stranger(real(0.5), 1);

@@ -7,6 +7,9 @@
 
 #include <ThyrixLite/Border.h>
 #include <ThyrixLite/Circle.h>
+#include <ThyrixLite/ColorDefinitions.h>
+#include <ThyrixLite/GUI.h>
+#include <ThyrixLite/World.h>
 
 #include <gtest/gtest.h>
 
@@ -82,6 +85,85 @@ TEST(SimulationRunner, StepsLikeAPlainLoopAndPausesAtTheChosenStep) {
   }
   EXPECT_EQ(s->contacts, reference->contacts.size());
   EXPECT_GT(s->contacts, 0u);
+}
+
+// A simulator whose own per-step logic, in its advanceTime() override, pushes the first
+// movable object and counts the steps.
+class ScriptedSimulator : public Simulator {
+ public:
+  int scriptedSteps = 0;
+  void advanceTime() override {
+    ++scriptedSteps;
+    objects[1].externalForce += Vector2{2, 0};
+    Simulator::advanceTime();
+  }
+};
+
+TEST(SimulationRunner, RunsASimulatorSubclassesOwnStepLogic) {
+  // The thread calls the world's advanceTime(): the subclass's logic runs at every step, as in
+  // a console loop, and moves the pushed circle as it moves there.
+  const auto make = [] {
+    auto simulator = std::make_unique<ScriptedSimulator>();
+    simulator->registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
+    simulator->registerObject(std::make_unique<Circle>(real(0.5), real(1))).r = {0, 1};
+    return simulator;
+  };
+  SimulationSetup setup;
+  setup.makeWorld = make;
+  setup.stepsPerSecond = 0;
+  setup.pauseAtStep = 60;
+  SimulationRunner runner(setup);
+  const auto s = waitFor(runner, [](const WorldSnapshot& w) { return !w.running && w.step > 0; });
+  EXPECT_EQ(s->step, 60u);
+  const auto reference = make();
+  for (int i = 0; i < 60; ++i) reference->advanceTime();
+  EXPECT_EQ(reference->scriptedSteps, 60);
+  ASSERT_EQ(s->shapes.size(), 1u);
+  EXPECT_EQ(s->shapes[0].a, reference->objects[1].r);
+  EXPECT_GT(s->shapes[0].a.x, 1);  // pushed at 2 m/s for 0.6 s
+}
+
+// A World that is not a Simulator: one value that grows by its time step each step, drawn as a
+// circle at that abscissa.
+class CountingWorld : public World {
+ public:
+  CountingWorld() : World(real(0.25)) {}
+  void advanceTime() override {
+    World::advanceTime();
+    x_ += timestep();
+  }
+  void draw(GUI& gui) const override {
+    gui.drawCircle({x_, 0}, real(0.1), 0, colors::red, colors::black);
+  }
+
+ private:
+  real x_ = 0;
+};
+
+TEST(SimulationRunner, StepsAndDrawsAnyWorld) {
+  SimulationSetup setup;
+  setup.makeWorld = [] { return std::make_unique<CountingWorld>(); };
+  setup.stepsPerSecond = 0;
+  setup.pauseAtStep = 8;
+  SimulationRunner runner(setup);
+  auto s = waitFor(runner, [](const WorldSnapshot& w) { return !w.running && w.step > 0; });
+  EXPECT_EQ(s->step, 8u);
+  EXPECT_DOUBLE_EQ(s->time, 8 * 0.25);
+  EXPECT_FALSE(s->isSimulator);
+  EXPECT_TRUE(s->error.empty()) << s->error;
+  EXPECT_TRUE(s->shapes.empty());  // nothing to drag
+  EXPECT_EQ(s->contacts, 0u);
+  // Its drawing is its own draw(): the circle where 8 steps of 0.25 put it.
+  ASSERT_EQ(s->drawing.commands().size(), 1u);
+  const DrawCommand& circle = s->drawing.commands()[0];
+  EXPECT_EQ(circle.kind, DrawCommand::Kind::Circle);
+  ASSERT_EQ(circle.count, 1u);
+  EXPECT_EQ(s->drawing.points(circle)[0], (Vector2{2, 0}));
+  // Dragging needs a Simulator: ignored, and the world keeps stepping.
+  runner.startDrag(s->generation, 0, {0, 0});
+  runner.singleStep();
+  s = waitFor(runner, [](const WorldSnapshot& w) { return w.step == 9; });
+  EXPECT_FALSE(s->dragging);
 }
 
 TEST(SimulationRunner, SingleStepsRunsAndPauses) {
