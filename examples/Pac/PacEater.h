@@ -10,7 +10,7 @@ namespace thyrix {
 /// Drives a Pac that has no controller through its effectors, to eat one object. It reads the
 /// world directly (the Pac's fitted pose and the target's position), not the Pac's sensors:
 /// it is a script for tests and demonstrations, not a controller to evolve. Call step() before
-/// each Simulator::advanceTime(). The phases:
+/// each Simulator::advanceTime() (PacEatingSimulator does, in its own advanceTime()). The phases:
 /// 1. Opening: mouth open, no locomotion, until the mouth sensor reads at least 0.9;
 /// 2. Approaching: mouth open, steering toward the target and advancing (slower when it is off
 ///    the heading, backing off when it is far off), until the target's centre is inside the
