@@ -245,6 +245,9 @@ void SimulationFrame::buildMenus() {
         if (runner_)
           e.Check(runner_->solver() == (e.GetId() == idBaraff ? ContactSolverKind::Baraff
                                                               : ContactSolverKind::GaussSeidel));
+        // Only a Simulator has a contact solver.
+        const WorldSnapshot* s = view_ != nullptr ? view_->snapshot().get() : nullptr;
+        e.Enable(s == nullptr || s->isSimulator);
       },
       idBaraff, idGaussSeidel);
   Bind(
