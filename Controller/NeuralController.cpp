@@ -1,0 +1,148 @@
+#include <Controller/NeuralController.h>
+#include <ThyrixLite/InvalidArgument.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace thyrix {
+
+namespace {
+
+real activate(Activation activation, real x) {
+  if (activation == Activation::Tanh) return std::tanh(x);
+  return 1 / (1 + std::exp(-x));
+}
+
+// The activation mapped to [0, 1], for the outputs.
+real activateUnit(Activation activation, real x) {
+  if (activation == Activation::Tanh) return real(0.5) * (1 + std::tanh(x));
+  return 1 / (1 + std::exp(-x));
+}
+
+// sums[i] += sum_j weights[j * n + i] * inputs[j], j in order. The inner loop runs over the
+// targets, so each sum keeps its order while the compiler handles several targets at once.
+void accumulate(std::span<const real> weights, std::span<const real> inputs, real* sums,
+                std::size_t n) {
+  const real* row = weights.data();
+  for (const real x : inputs) {
+    for (std::size_t i = 0; i < n; ++i) sums[i] += row[i] * x;
+    row += n;
+  }
+}
+
+void requireCount(std::size_t count, std::size_t expected, const char* field) {
+  if (count != expected)
+    throw InvalidArgument(field, "must have " + std::to_string(expected) + " values (got " +
+                                     std::to_string(count) + ")");
+}
+
+}  // namespace
+
+NeuralController::NeuralController(NetworkSpec spec, real timestep)
+    : spec_(std::move(spec)), timestep_(timestep) {
+  requirePositive(timestep, "NeuralController.timestep");
+  parameters_.assign(spec_.parameterCount(), 0);  // validates the spec
+  const std::size_t widest = *std::max_element(spec_.layers.begin(), spec_.layers.end());
+  if (spec_.kind == NetworkKind::Ctrnn) {
+    const std::size_t neurons = spec_.layers[1];
+    rate_.assign(neurons, 0);
+    state_.assign(neurons, 0);
+    firing_.assign(neurons, 0);
+    scratch_.assign(neurons, 0);
+  } else {
+    scratch_.assign(2 * widest, 0);
+  }
+  useParameters();
+}
+
+void NeuralController::setParameters(std::span<const real> parameters) {
+  requireCount(parameters.size(), parameters_.size(), "NeuralController.parameters");
+  for (std::size_t p = 0; p < parameters.size(); ++p)
+    if (!std::isfinite(parameters[p]))
+      throw InvalidArgument("NeuralController.parameters", "value " + std::to_string(p) +
+                                                               " must be finite (got " +
+                                                               std::to_string(parameters[p]) + ")");
+  if (parameters.data() != parameters_.data())  // parameters() passed back is already in place
+    std::copy(parameters.begin(), parameters.end(), parameters_.begin());
+  useParameters();
+}
+
+void NeuralController::useParameters() {
+  // tau = dt + exp(p) > dt: the Euler factor dt / tau stays in (0, 1).
+  for (std::size_t i = 0; i < rate_.size(); ++i)
+    rate_[i] = timestep_ / (timestep_ + std::exp(parameters_[i]));
+  reset();
+}
+
+void NeuralController::reset() {
+  std::fill(state_.begin(), state_.end(), real(0));
+  updateFiring();
+}
+
+void NeuralController::updateFiring() {
+  const std::size_t neurons = state_.size();
+  const real* biases = parameters_.data() + neurons;
+  for (std::size_t i = 0; i < neurons; ++i)
+    firing_[i] = activate(spec_.activation, state_[i] + biases[i]);
+}
+
+void NeuralController::control(std::span<const real> sensors, std::span<real> effectors) {
+  requireCount(sensors.size(), spec_.layers.front(), "NeuralController.sensors");
+  requireCount(effectors.size(), spec_.layers.back(), "NeuralController.effectors");
+  if (spec_.kind == NetworkKind::Ctrnn)
+    stepCtrnn(sensors, effectors);
+  else
+    feedForward(sensors, effectors);
+}
+
+void NeuralController::feedForward(std::span<const real> sensors, std::span<real> effectors) {
+  const std::size_t half = scratch_.size() / 2;
+  std::span<const real> in = sensors;
+  real* out = scratch_.data();
+  std::span<const real> parameters = parameters_;
+  const std::size_t last = spec_.layers.size() - 1;
+  for (std::size_t l = 1; l <= last; ++l) {
+    const std::size_t n = spec_.layers[l];
+    std::copy_n(parameters.begin(), n, out);  // the biases
+    const std::size_t weightCount = in.size() * n;
+    accumulate(parameters.subspan(n, weightCount), in, out, n);
+    parameters = parameters.subspan(n + weightCount);
+    if (l == last) {
+      for (std::size_t i = 0; i < n; ++i) effectors[i] = activateUnit(spec_.activation, out[i]);
+    } else {
+      for (std::size_t i = 0; i < n; ++i) out[i] = activate(spec_.activation, out[i]);
+      in = std::span<const real>(out, n);
+      out = out == scratch_.data() ? scratch_.data() + half : scratch_.data();
+    }
+  }
+}
+
+void NeuralController::stepCtrnn(std::span<const real> sensors, std::span<real> effectors) {
+  const std::size_t inputs = sensors.size();
+  const std::size_t neurons = state_.size();
+  const std::size_t outputs = effectors.size();
+  std::span<const real> gains =
+      std::span<const real>(parameters_).subspan(2 * neurons, inputs * neurons);
+  std::span<const real> weights =
+      std::span<const real>(parameters_).subspan(2 * neurons + inputs * neurons, neurons * neurons);
+  std::span<const real> outputBiases =
+      std::span<const real>(parameters_)
+          .subspan(2 * neurons + inputs * neurons + neurons * neurons, outputs);
+  std::span<const real> outputWeights =
+      std::span<const real>(parameters_)
+          .subspan(2 * neurons + inputs * neurons + neurons * neurons + outputs, neurons * outputs);
+
+  real* net = scratch_.data();
+  std::fill_n(net, neurons, real(0));
+  accumulate(gains, sensors, net, neurons);
+  accumulate(weights, firing_, net, neurons);
+  for (std::size_t i = 0; i < neurons; ++i) state_[i] += rate_[i] * (net[i] - state_[i]);
+  updateFiring();
+
+  std::copy(outputBiases.begin(), outputBiases.end(), effectors.begin());
+  accumulate(outputWeights, firing_, effectors.data(), outputs);
+  for (real& value : effectors) value = activateUnit(spec_.activation, value);
+}
+
+}  // namespace thyrix
