@@ -6,10 +6,16 @@
 #include <Tools/Random.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace thyrix {
@@ -232,6 +238,227 @@ TEST(RandomTest, Bernoulli) {
 
 // ---------------------------------------------------------------------------------------------
 // purgeContainer
+
+// Marsaglia's polar method written out independently, on the uniform draws of @p stream, with
+// the C library's log: MTRandom::normal() must give these numbers.
+class PolarReference {
+ public:
+  explicit PolarReference(std::uint32_t seed) : stream_(seed) {}
+  double next() {
+    if (kept_) {
+      kept_ = false;
+      return second_;
+    }
+    for (;;) {
+      const double u = 2 * stream_.uniform() - 1;
+      const double v = 2 * stream_.uniform() - 1;
+      const double s = u * u + v * v;
+      if (s >= 1 || s == 0) continue;
+      const double f = std::sqrt(-2 * std::log(s) / s);
+      second_ = v * f;
+      kept_ = true;
+      return u * f;
+    }
+  }
+  MTRandom& stream() { return stream_; }
+
+ private:
+  MTRandom stream_;
+  bool kept_ = false;
+  double second_ = 0;
+};
+
+TEST(MTRandomNormalTest, MatchesThePolarMethodOnTheUniformStream) {
+  for (const std::uint32_t seed : {1u, 5489u, 123456789u}) {
+    SCOPED_TRACE(seed);
+    MTRandom random(seed);
+    PolarReference reference(seed);
+    for (int i = 0; i < 20000; ++i) {
+      const double expected = reference.next();
+      // Only the last bit of the log may differ from the C library's.
+      ASSERT_NEAR(random.normal(), expected, 4e-16 * std::max(1.0, std::abs(expected)))
+          << "draw " << i;
+    }
+    // The same uniform draws were used: the raw streams are at the same place.
+    ASSERT_EQ(random.nextUint32(), reference.stream().nextUint32());
+  }
+}
+
+TEST(MTRandomNormalTest, MeanVarianceAndSpread) {
+  MTRandom random(2024);
+  const int n = 1000000;
+  double sum = 0;
+  double squares = 0;
+  double fourth = 0;
+  int withinOne = 0;
+  for (int i = 0; i < n; ++i) {
+    const double x = random.normal();
+    sum += x;
+    squares += x * x;
+    fourth += x * x * x * x;
+    if (std::abs(x) < 1) ++withinOne;
+  }
+  // Five standard errors: mean 1/sqrt(n), variance sqrt(2/n), P(|x| < 1) sqrt(p(1-p)/n).
+  const double mean = sum / n;
+  EXPECT_NEAR(mean, 0, 5 / std::sqrt(n));
+  EXPECT_NEAR(squares / n - mean * mean, 1, 5 * std::sqrt(2.0 / n));
+  EXPECT_NEAR(fourth / n, 3, 5 * std::sqrt(96.0 / n));  // E x^4 = 3, Var x^4 = 105 - 9
+  EXPECT_NEAR(static_cast<double>(withinOne) / n, 0.682689492137, 5 * std::sqrt(0.2167 / n));
+
+  MTRandom shifted(7);
+  double shiftedSum = 0;
+  double shiftedSquares = 0;
+  const int m = 200000;
+  for (int i = 0; i < m; ++i) {
+    const double x = shifted.normal(3, 2);
+    shiftedSum += x;
+    shiftedSquares += x * x;
+  }
+  const double shiftedMean = shiftedSum / m;
+  EXPECT_NEAR(shiftedMean, 3, 5 * 2 / std::sqrt(m));
+  EXPECT_NEAR(shiftedSquares / m - shiftedMean * shiftedMean, 4, 5 * 4 * std::sqrt(2.0 / m));
+}
+
+TEST(MTRandomNormalTest, ScaledDrawIsMeanPlusSdTimesStandard) {
+  MTRandom a(99);
+  MTRandom b(99);
+  for (int i = 0; i < 101; ++i) ASSERT_EQ(a.normal(-1.5, 0.25), -1.5 + 0.25 * b.normal());
+  EXPECT_EQ(a.normal(4, 0), 4);
+  EXPECT_THROW((void)a.normal(0, -1), std::invalid_argument);
+  EXPECT_THROW((void)a.normal(0, std::numeric_limits<double>::infinity()), std::invalid_argument);
+  EXPECT_THROW((void)a.normal(0, std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
+}
+
+TEST(MTRandomNormalTest, SeedForgetsTheKeptDraw) {
+  MTRandom random(11);
+  (void)random.normal();  // keeps the pair's second draw
+  random.seed(11);
+  MTRandom fresh(11);
+  for (int i = 0; i < 10; ++i) ASSERT_EQ(random.normal(), fresh.normal());
+}
+
+// Draws a mix of everything the stream offers.
+std::vector<double> drawMix(MTRandom& random, int count) {
+  std::vector<double> values;
+  for (int i = 0; i < count; ++i) {
+    values.push_back(random.normal());
+    values.push_back(random.uniform());
+    values.push_back(random.integer(-5, 5));
+    values.push_back(random.normal(1, 3));
+    values.push_back(random.normal());
+  }
+  return values;
+}
+
+TEST(MTRandomStateTest, RestoreContinuesIdentically) {
+  for (const int before : {0, 1, 2, 7}) {  // odd counts leave a kept normal draw in the state
+    SCOPED_TRACE(before);
+    MTRandom random(31337);
+    for (int i = 0; i < before; ++i) (void)random.normal();
+    const MTRandom::State saved = random.saveState();
+    EXPECT_EQ(saved.hasSpare, before % 2 == 1);
+    const std::vector<double> first = drawMix(random, 500);
+
+    random.restoreState(saved);
+    EXPECT_EQ(random.saveState(), saved);
+    EXPECT_EQ(drawMix(random, 500), first);
+
+    MTRandom other(1);  // another stream takes the state over
+    other.restoreState(saved);
+    EXPECT_EQ(drawMix(other, 500), first);
+
+    std::stringstream text;
+    saved.write(text);
+    text << "after\n";
+    const MTRandom::State read = MTRandom::State::read(text);
+    EXPECT_EQ(read, saved);
+    std::string rest;
+    text >> rest;
+    EXPECT_EQ(rest, "after") << "read() stops after the state";
+    MTRandom third(2);
+    third.restoreState(read);
+    EXPECT_EQ(drawMix(third, 500), first);
+  }
+}
+
+TEST(MTRandomStateTest, TextFormIsTheDocumentedOne) {
+  // A fresh stream holds MT19937's seeding recurrence (init_genrand) and twists at its first draw.
+  std::ostringstream expected;
+  expected << "mt19937-state 1\n624";
+  std::uint32_t word = 42;
+  for (std::uint32_t i = 0; i < 624; ++i) {
+    if (i > 0) word = 1812433253u * (word ^ (word >> 30)) + i;
+    expected << ' ' << word;
+  }
+  expected << "\nspare 0 0x0p+0\n";
+  std::ostringstream text;
+  MTRandom(42).saveState().write(text);
+  EXPECT_EQ(text.str(), expected.str());
+
+  MTRandom random(42);
+  (void)random.normal();
+  const MTRandom::State state = random.saveState();
+  EXPECT_TRUE(state.hasSpare);
+  EXPECT_EQ(state.index, 4u) << "two uniform draws of two words each";
+  std::ostringstream withSpare;
+  state.write(withSpare);
+  char spare[64];
+  std::snprintf(spare, sizeof spare, "%a", state.spare);
+  std::ostringstream line;
+  line << "\nspare 1 " << spare << '\n';
+  EXPECT_NE(withSpare.str().find(line.str()), std::string::npos);
+}
+
+TEST(MTRandomStateTest, RestoreRefusesAnImpossibleState) {
+  MTRandom random(3);
+  const MTRandom::State before = random.saveState();
+  MTRandom::State bad = before;
+  bad.index = 625;
+  EXPECT_THROW(random.restoreState(bad), std::invalid_argument);
+  bad = before;
+  bad.hasSpare = true;
+  bad.spare = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(random.restoreState(bad), std::invalid_argument);
+  EXPECT_EQ(random.saveState(), before);
+}
+
+TEST(MTRandomStateTest, ReadRefusesCorruptStates) {
+  MTRandom random(5);
+  (void)random.normal();
+  std::ostringstream good;
+  random.saveState().write(good);
+  const std::string text = good.str();
+  const auto refused = [](const std::string& input, const std::string& expected) {
+    std::istringstream in(input);
+    try {
+      (void)MTRandom::State::read(in);
+      ADD_FAILURE() << "accepted: " << input.substr(0, 60);
+    } catch (const std::runtime_error& error) {
+      EXPECT_NE(std::string(error.what()).find(expected), std::string::npos) << error.what();
+    }
+  };
+  refused("", "expected 'mt19937-state'");
+  refused("genome 1\n", "expected 'mt19937-state'");
+  refused("mt19937-state 2\n", "version '2' is not supported");
+  refused(text.substr(0, text.size() / 2), "missing word");
+  const std::size_t index = text.find('\n') + 1;  // the index, then the words
+  refused(text.substr(0, index) + "625 ", "index '625' is not a number from 0 to 624");
+  refused(text.substr(0, index) + "-1 ", "index '-1'");
+  const std::size_t firstWord = text.find(' ', index) + 1;
+  std::string big = text;
+  big.replace(firstWord, 0, "4294967296 ");  // one word too large, the rest shifted
+  refused(big, "word 0 ('4294967296') is not a 32-bit unsigned number");
+  std::string negative = text;
+  negative.replace(firstWord, 0, "-1 ");
+  refused(negative, "word 0 ('-1')");
+  const std::size_t spare = text.find("spare");
+  refused(text.substr(0, spare), "expected 'spare 0|1 VALUE'");
+  refused(text.substr(0, spare) + "spare 2 0x1p+0\n", "expected 'spare 0|1 VALUE'");
+  refused(text.substr(0, spare) + "spare 1 nan\n", "the spare 'nan' is not a finite number");
+  refused(text.substr(0, spare) + "spare 1 1.5x\n", "the spare '1.5x'");
+  std::istringstream in(text);
+  EXPECT_EQ(MTRandom::State::read(in), random.saveState());
+}
 
 TEST(PurgeContainerTest, EmptiesAndReleasesCapacity) {
   std::vector<int> values(1000, 7);
