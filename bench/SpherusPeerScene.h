@@ -6,9 +6,9 @@
 
 #include "PeerScenes.h"
 
+#include <Agents/SpherusSimulator.h>
 #include <Controller/RandomController.h>
 #include <Scenes.h>
-#include <SpherusSimulator.h>
 
 #include <cmath>
 #include <cstdint>

@@ -1,7 +1,7 @@
 // Iunctus: its sensor and effector layout, the scripted grasp, reproducibility.
 
+#include <Agents/IunctusSimulator.h>
 #include <Controller/RandomController.h>
-#include <IunctusSimulator.h>
 #include <Scenes.h>
 
 #include <gtest/gtest.h>

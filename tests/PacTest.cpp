@@ -5,9 +5,9 @@
 #include "TestTolerances.h"
 #include "support/AllocationCounter.h"
 
+#include <Agents/PacEater.h>
+#include <Agents/PacSimulator.h>
 #include <Controller/RandomController.h>
-#include <PacEater.h>
-#include <PacSimulator.h>
 #include <Scenes.h>
 #include <ThyrixLite/Circle.h>
 #include <ThyrixLite/InvalidArgument.h>

@@ -4,8 +4,8 @@
 
 #include "support/AllocationCounter.h"
 
+#include <Agents/SpherusSimulator.h>
 #include <Controller/RandomController.h>
-#include <SpherusSimulator.h>
 
 #include <gtest/gtest.h>
 

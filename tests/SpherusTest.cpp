@@ -2,9 +2,9 @@
 
 #include "TestTolerances.h"
 
+#include <Agents/SpherusSimulator.h>
 #include <Controller/RandomController.h>
 #include <Scenes.h>
-#include <SpherusSimulator.h>
 #include <ThyrixLite/Circle.h>
 
 #include <gtest/gtest.h>

@@ -2,8 +2,8 @@
 // grasper, and prints at each printed step the agent's base position and the first object's
 // position. Run with --help for the options.
 
-#include "IunctusGrasper.h"
-#include "IunctusSimulator.h"
+#include <Agents/IunctusGrasper.h>
+#include <Agents/IunctusSimulator.h>
 
 #include <CommandLine.h>
 #include <Controller/RandomController.h>

@@ -3,7 +3,7 @@
 // GUI options (speed, geometry, and the automation options --screenshot, --after and
 // --print-drag). Run with --help for the list.
 
-#include "IunctusSimulator.h"
+#include <Agents/IunctusSimulator.h>
 
 #include <Controller/RandomController.h>
 #include <WindowCommandLine.h>

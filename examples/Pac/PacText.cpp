@@ -2,8 +2,8 @@
 // script of PacEatingSimulator), and prints, at each printed step, both agents' centres and how
 // many food circles each holds inside its ring. Run with --help for the options.
 
-#include "PacEatingSimulator.h"
-#include "PacSimulator.h"
+#include <Agents/PacEatingSimulator.h>
+#include <Agents/PacSimulator.h>
 
 #include <CommandLine.h>
 #include <Controller/RandomController.h>

@@ -5,8 +5,8 @@
 // PacEatingSimulator, as in PacText: the script runs in the world's advanceTime(), which the
 // window's simulation thread calls.
 
-#include "PacEatingSimulator.h"
-#include "PacSimulator.h"
+#include <Agents/PacEatingSimulator.h>
+#include <Agents/PacSimulator.h>
 
 #include <Controller/RandomController.h>
 #include <WindowCommandLine.h>

@@ -1,7 +1,7 @@
 // SpherusText: runs Spherus with the random controller in its arena and prints, at each printed
 // step, the position of the agent's centre. Run with --help for the options.
 
-#include "SpherusSimulator.h"
+#include <Agents/SpherusSimulator.h>
 
 #include <CommandLine.h>
 #include <Controller/RandomController.h>

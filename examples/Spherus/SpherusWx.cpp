@@ -2,7 +2,7 @@
 // options as SpherusText, plus the shared GUI options (speed, geometry, and the automation
 // options --screenshot, --after and --print-drag). Run with --help for the list.
 
-#include "SpherusSimulator.h"
+#include <Agents/SpherusSimulator.h>
 
 #include <Controller/RandomController.h>
 #include <WindowCommandLine.h>
