@@ -1,4 +1,4 @@
-#include "ArenaSetup.h"
+#include <Agents/ArenaSetup.h>
 
 #include <ThyrixLite/Border.h>
 

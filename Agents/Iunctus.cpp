@@ -1,4 +1,4 @@
-#include "Iunctus.h"
+#include <Agents/Iunctus.h>
 
 #include <ThyrixLite/GUI.h>
 #include <Tools/MathTools.h>

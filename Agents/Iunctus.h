@@ -49,7 +49,7 @@ struct IunctusParameters {
 ///   centre is inside the polygon of the base's centre, the joints and the limb's tip.
 class Iunctus : public ArticulatedAgentQuasistatic {
  public:
-  using Parameters = IunctusParameters;
+  using Parameters = IunctusParameters;    ///< the agent's sizes and strengths
   static constexpr int effectorCount = 7;  ///< number of effectors
   static constexpr int sensorCount = 30;   ///< number of sensors
   static constexpr int jointCount = 3;     ///< links (and joints) of the limb
@@ -76,6 +76,7 @@ class Iunctus : public ArticulatedAgentQuasistatic {
   [[nodiscard]] std::span<const real> sensors() const { return sensors_; }
   /// The effector activations, written by the controller each step (or by hand without one).
   [[nodiscard]] std::span<real> effectors() { return effectors_; }
+  /// The effector activations, read only.
   [[nodiscard]] std::span<const real> effectors() const { return effectors_; }
   /// Replaces the controller (null: driven by hand through effectors()).
   void setController(std::unique_ptr<Controller> controller) {
@@ -83,6 +84,7 @@ class Iunctus : public ArticulatedAgentQuasistatic {
   }
   /// The controller, or null.
   [[nodiscard]] Controller* controller() const { return controller_.get(); }
+  /// The parameters it was built with.
   [[nodiscard]] const Parameters& parameters() const { return parameters_; }
 
   /// The unit forward direction (the base's x axis).

@@ -1,4 +1,4 @@
-#include "IunctusGrasper.h"
+#include <Agents/IunctusGrasper.h>
 
 #include <Tools/MathTools.h>
 

@@ -3,7 +3,7 @@
 /// @brief A scripted behaviour: an Iunctus opens its limb, approaches an object, curls the limb
 /// around it and carries it a set distance.
 
-#include "Iunctus.h"
+#include <Agents/Iunctus.h>
 
 #include <Controller/Controller.h>
 
@@ -41,6 +41,7 @@ class IunctusGrasper : public Controller {
   /// How fast the servo targets move while closing (rad/s).
   static constexpr real closingRate = real(0.5);
 
+  /// A script for @p agent that catches @p target and carries it @p carryDistance (m).
   IunctusGrasper(Iunctus& agent, const PhysicalObject& target, real carryDistance = 2);
 
   /// Advances the script and writes the agent's effectors for the next step.
@@ -49,6 +50,7 @@ class IunctusGrasper : public Controller {
   /// through it), and the sensors are not read.
   void control(std::span<const real> sensors, std::span<real> effectors) override;
 
+  /// The script's current phase.
   [[nodiscard]] Phase phase() const { return phase_; }
   /// True once the target has been carried the set distance.
   [[nodiscard]] bool done() const { return phase_ == Phase::Holding; }

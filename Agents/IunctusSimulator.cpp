@@ -1,6 +1,6 @@
-#include "IunctusSimulator.h"
+#include <Agents/IunctusSimulator.h>
 
-#include "ArenaSetup.h"
+#include <Agents/ArenaSetup.h>
 
 #include <ThyrixLite/InvalidArgument.h>
 #include <Tools/MTRandom.h>

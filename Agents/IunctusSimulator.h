@@ -2,8 +2,8 @@
 /// @file IunctusSimulator.h
 /// @brief The Iunctus arena: walls, one Iunctus and circular objects to catch.
 
-#include "Iunctus.h"
-#include "IunctusGrasper.h"
+#include <Agents/Iunctus.h>
+#include <Agents/IunctusGrasper.h>
 
 #include <ThyrixLite/Circle.h>
 #include <ThyrixLite/Simulator.h>
@@ -40,6 +40,7 @@ class IunctusSimulator : public Simulator {
   /// @throws InvalidArgument naming "IunctusSimulator.objects" when there is no object
   IunctusGrasper& useGrasper(real carryDistance = 2);
 
+  /// The agent.
   [[nodiscard]] Iunctus& iunctus() const { return *iunctus_; }
   /// The circles, the first one ahead of the agent.
   [[nodiscard]] const std::vector<Circle*>& objectsToCatch() const { return objects_; }

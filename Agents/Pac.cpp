@@ -1,4 +1,4 @@
-#include "Pac.h"
+#include <Agents/Pac.h>
 
 #include <ThyrixLite/GUI.h>
 #include <ThyrixLite/InvalidArgument.h>

@@ -86,7 +86,7 @@ struct PacParameters {
 ///   11 .. 10 + circleCount: the outer half of each circle, from circle 0 counter-clockwise.
 class Pac : public Elastoid {
  public:
-  using Parameters = PacParameters;
+  using Parameters = PacParameters;         ///< the agent's sizes and strengths
   static constexpr int effectorCount = 5;   ///< number of effectors
   static constexpr int leftForward = 0;     ///< effector: left half forward
   static constexpr int leftBackward = 1;    ///< effector: left half backward

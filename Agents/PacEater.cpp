@@ -1,4 +1,4 @@
-#include "PacEater.h"
+#include <Agents/PacEater.h>
 
 #include <algorithm>
 #include <cmath>

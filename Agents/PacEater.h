@@ -3,7 +3,7 @@
 /// @brief A scripted behaviour: a Pac opens its mouth, advances onto an object, closes its mouth
 /// on it and carries it away.
 
-#include "Pac.h"
+#include <Agents/Pac.h>
 
 namespace thyrix {
 

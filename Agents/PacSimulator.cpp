@@ -1,6 +1,6 @@
-#include "PacSimulator.h"
+#include <Agents/PacSimulator.h>
 
-#include "ArenaSetup.h"
+#include <Agents/ArenaSetup.h>
 
 #include <ThyrixLite/InvalidArgument.h>
 #include <Tools/MTRandom.h>

@@ -2,7 +2,7 @@
 /// @file PacSimulator.h
 /// @brief The Pac arena: walls, two Pacs facing each other and food circles to eat.
 
-#include "Pac.h"
+#include <Agents/Pac.h>
 
 #include <ThyrixLite/Simulator.h>
 

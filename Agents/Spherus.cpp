@@ -1,4 +1,4 @@
-#include "Spherus.h"
+#include <Agents/Spherus.h>
 
 #include <ThyrixLite/GUI.h>
 #include <ThyrixLite/World.h>

@@ -38,7 +38,7 @@ struct SpherusParameters {
 ///   then 34: the link length as a fraction of maxLinkLength.
 class Spherus : public Elastoid {
  public:
-  using Parameters = SpherusParameters;
+  using Parameters = SpherusParameters;        ///< the agent's sizes and strengths
   static constexpr int effectorCount = 5;      ///< number of effectors
   static constexpr int sensorCount = 35;       ///< number of sensors
   static constexpr int sensorsPerCircle = 17;  ///< contact 8, visual 7, velocity 2
@@ -54,17 +54,22 @@ class Spherus : public Elastoid {
   [[nodiscard]] std::span<const real> sensors() const { return sensors_; }
   /// The effector activations, written by the controller each step (or by hand without one).
   [[nodiscard]] std::span<real> effectors() { return effectors_; }
+  /// The effector activations, read only.
   [[nodiscard]] std::span<const real> effectors() const { return effectors_; }
   /// The controller, or null.
   [[nodiscard]] Controller* controller() const { return controller_.get(); }
 
+  /// The circle on the left of the forward direction.
   [[nodiscard]] Circle& leftCircle() const { return *left_; }
+  /// The circle on the right of the forward direction.
   [[nodiscard]] Circle& rightCircle() const { return *right_; }
   /// The midpoint of the two circle centres.
   [[nodiscard]] Vector2 centre() const { return (left_->r + right_->r) * real(0.5); }
   /// The unit forward direction (perpendicular to the link).
   [[nodiscard]] Vector2 forward() const;
+  /// The parameters it was built with.
   [[nodiscard]] const Parameters& parameters() const { return parameters_; }
+  /// The eye of circle @p circle (0: left, 1: right).
   [[nodiscard]] const VisualSensor& eye(int circle) const { return eyes_[circle]; }
 
   [[nodiscard]] std::span<const VisualSensor> visualSensors() const override { return eyes_; }

@@ -6,9 +6,11 @@
 #include <Controller/RandomController.h>
 #include <Scenes.h>
 #include <ThyrixLite/Circle.h>
+#include <ThyrixLite/InvalidArgument.h>
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 namespace thyrix {
@@ -119,6 +121,69 @@ TEST(Spherus, CircleBetweenTheBodyCirclesIsCarriedAlong) {
   EXPECT_LT(std::abs(offset.x), real(0.1));
   EXPECT_GT(offset.y, 0);
   EXPECT_LT(offset.y, real(0.45)) << "still held between the circles";
+}
+
+TEST(Spherus, DefaultPoseIsTheCentreFacingUp) {
+  SpherusSimulator::Options options;
+  SpherusSimulator simulator(options, nullptr);
+  EXPECT_NEAR(simulator.spherus().centre().x, options.size / 2, test::tight);
+  EXPECT_NEAR(simulator.spherus().centre().y, options.size / 2, test::tight);
+  EXPECT_NEAR(simulator.spherus().forward().x, 0, test::tight);
+  EXPECT_NEAR(simulator.spherus().forward().y, 1, test::tight);
+}
+
+TEST(Spherus, RandomPoseIsSeededSpreadAndClearOfEverything) {
+  const SpherusParameters parameters;
+  const real reach = parameters.maxLinkLength / 2 + parameters.radius;
+  SpherusSimulator::Options options;  // 20 circles in a 10 m arena
+  const int seeds = 200;
+  std::array<int, 4> quadrants{};
+  double sumX = 0;
+  double sumY = 0;
+  for (int seed = 1; seed <= seeds; ++seed) {
+    options.poseSeed = static_cast<std::uint32_t>(seed);
+    SpherusSimulator simulator(options, nullptr);
+    const Spherus& agent = simulator.spherus();
+    const Vector2 centre = agent.centre();
+    ASSERT_GE(centre.x, 2 * reach);
+    ASSERT_LE(centre.x, options.size - 2 * reach);
+    ASSERT_GE(centre.y, 2 * reach);
+    ASSERT_LE(centre.y, options.size - 2 * reach);
+    ASSERT_EQ(simulator.obstacles().size(), std::size_t{20});
+    for (const Circle* circle : simulator.obstacles())
+      ASSERT_GE(distance(circle->r, centre), reach + 2 * options.objectRadius) << "seed " << seed;
+    const Vector2 f = agent.forward();
+    ++quadrants[(f.x >= 0 ? 0 : 1) + (f.y >= 0 ? 0 : 2)];
+    sumX += centre.x;
+    sumY += centre.y;
+
+    // The same seed gives the same world.
+    SpherusSimulator again(options, nullptr);
+    ASSERT_EQ(again.spherus().centre().x, centre.x);
+    ASSERT_EQ(again.spherus().centre().y, centre.y);
+    ASSERT_EQ(again.spherus().forward().x, f.x);
+    ASSERT_EQ(scenes::stateHash(again), scenes::stateHash(simulator));
+  }
+  // Headings uniform: about 50 a quadrant (standard deviation about 6).
+  for (const int count : quadrants) EXPECT_GE(count, 25);
+  // Centres uniform over [2 reach, size - 2 reach]: the mean within five standard errors.
+  const double spread = (options.size - 4 * reach) / std::sqrt(12.0) / std::sqrt(seeds);
+  EXPECT_NEAR(sumX / seeds, options.size / 2, 5 * spread);
+  EXPECT_NEAR(sumY / seeds, options.size / 2, 5 * spread);
+}
+
+TEST(Spherus, RandomPoseNeedsRoom) {
+  SpherusSimulator::Options options;
+  options.objects = 0;
+  options.size = 2;
+  SpherusSimulator centred(options, nullptr);  // without a random pose it is still built
+  options.poseSeed = 3;
+  try {
+    SpherusSimulator simulator(options, nullptr);
+    ADD_FAILURE() << "a random pose in a 2 m arena";
+  } catch (const InvalidArgument& error) {
+    EXPECT_EQ(error.field(), "SpherusSimulator.size");
+  }
 }
 
 TEST(Spherus, SameSeedSameTrajectory) {
