@@ -1,3 +1,4 @@
+#include <Controller/ActivationFunctions.h>
 #include <Controller/NeuralController.h>
 #include <ThyrixLite/InvalidArgument.h>
 
@@ -9,26 +10,27 @@ namespace thyrix {
 
 namespace {
 
-real activate(Activation activation, real x) {
-  if (activation == Activation::Tanh) return std::tanh(x);
-  return 1 / (1 + std::exp(-x));
+// sums[k] += sum_j weights[j * n + k] * inputs[j] for the W targets from sums, j in order, in
+// a local array the compiler keeps in registers: accumulating in memory would chain every
+// addition through a store and a load.
+template <std::size_t W>
+void accumulateBlock(const real* weights, std::span<const real> inputs, real* sums, std::size_t n) {
+  real block[W];
+  for (std::size_t k = 0; k < W; ++k) block[k] = sums[k];
+  for (const real x : inputs) {
+    for (std::size_t k = 0; k < W; ++k) block[k] += weights[k] * x;
+    weights += n;
+  }
+  for (std::size_t k = 0; k < W; ++k) sums[k] = block[k];
 }
 
-// The activation mapped to [0, 1], for the outputs.
-real activateUnit(Activation activation, real x) {
-  if (activation == Activation::Tanh) return real(0.5) * (1 + std::tanh(x));
-  return 1 / (1 + std::exp(-x));
-}
-
-// sums[i] += sum_j weights[j * n + i] * inputs[j], j in order. The inner loop runs over the
-// targets, so each sum keeps its order while the compiler handles several targets at once.
+// sums[i] += sum_j weights[j * n + i] * inputs[j] for every target i < n, j in order.
 void accumulate(std::span<const real> weights, std::span<const real> inputs, real* sums,
                 std::size_t n) {
-  const real* row = weights.data();
-  for (const real x : inputs) {
-    for (std::size_t i = 0; i < n; ++i) sums[i] += row[i] * x;
-    row += n;
-  }
+  std::size_t i = 0;
+  for (; i + 8 <= n; i += 8) accumulateBlock<8>(weights.data() + i, inputs, sums + i, n);
+  for (; i + 4 <= n; i += 4) accumulateBlock<4>(weights.data() + i, inputs, sums + i, n);
+  for (; i < n; ++i) accumulateBlock<1>(weights.data() + i, inputs, sums + i, n);
 }
 
 void requireCount(std::size_t count, std::size_t expected, const char* field) {
@@ -71,7 +73,8 @@ void NeuralController::setParameters(std::span<const real> parameters) {
 void NeuralController::useParameters() {
   // tau = dt + exp(p) > dt: the Euler factor dt / tau stays in (0, 1).
   for (std::size_t i = 0; i < rate_.size(); ++i)
-    rate_[i] = timestep_ / (timestep_ + std::exp(parameters_[i]));
+    rate_[i] = static_cast<real>(
+        timestep_ / (timestep_ + boundedExp(std::clamp<double>(parameters_[i], -60, 60))));
   reset();
 }
 
@@ -83,8 +86,8 @@ void NeuralController::reset() {
 void NeuralController::updateFiring() {
   const std::size_t neurons = state_.size();
   const real* biases = parameters_.data() + neurons;
-  for (std::size_t i = 0; i < neurons; ++i)
-    firing_[i] = activate(spec_.activation, state_[i] + biases[i]);
+  for (std::size_t i = 0; i < neurons; ++i) firing_[i] = state_[i] + biases[i];
+  activateLayer(spec_.activation, firing_);
 }
 
 void NeuralController::control(std::span<const real> sensors, std::span<real> effectors) {
@@ -109,9 +112,10 @@ void NeuralController::feedForward(std::span<const real> sensors, std::span<real
     accumulate(parameters.subspan(n, weightCount), in, out, n);
     parameters = parameters.subspan(n + weightCount);
     if (l == last) {
-      for (std::size_t i = 0; i < n; ++i) effectors[i] = activateUnit(spec_.activation, out[i]);
+      std::copy_n(out, n, effectors.begin());
+      activateOutputs(spec_.activation, effectors);
     } else {
-      for (std::size_t i = 0; i < n; ++i) out[i] = activate(spec_.activation, out[i]);
+      activateLayer(spec_.activation, std::span<real>(out, n));
       in = std::span<const real>(out, n);
       out = out == scratch_.data() ? scratch_.data() + half : scratch_.data();
     }
@@ -142,7 +146,7 @@ void NeuralController::stepCtrnn(std::span<const real> sensors, std::span<real> 
 
   std::copy(outputBiases.begin(), outputBiases.end(), effectors.begin());
   accumulate(outputWeights, firing_, effectors.data(), outputs);
-  for (real& value : effectors) value = activateUnit(spec_.activation, value);
+  activateOutputs(spec_.activation, effectors);
 }
 
 }  // namespace thyrix

@@ -15,7 +15,8 @@ enum class NetworkKind {
   Ctrnn         ///< a continuous-time recurrent network (Beer 1995), integrated by forward Euler
 };
 
-/// The squashing function of the units.
+/// The squashing function of the units, computed with basic arithmetic only
+/// (ActivationFunctions.h), so a network gives the same bits on every platform.
 enum class Activation {
   Tanh,     ///< tanh(x) in (-1, 1); an output is mapped to (0, 1) as (1 + tanh(x)) / 2
   Logistic  ///< 1 / (1 + exp(-x)) in (0, 1)
@@ -38,7 +39,8 @@ enum class Activation {
 /// `act01(c_o + sum_j v_jo act(y_j + theta_j))` after the step, with `act01` the activation
 /// mapped to [0, 1]. The parameters, in this order:
 /// - `N` time-constant parameters `p_i`, with `tau_i = dt + exp(p_i)` (s): always above `dt`, so
-///   the Euler step is stable whatever the parameter;
+///   the Euler step is stable whatever the parameter (`p_i` is limited to [-60, 60], where
+///   `exp(p_i)` is already negligible beside `dt` or the neuron frozen);
 /// - `N` biases `theta_i`;
 /// - `I * N` input gains `g_ki`, source by source (k = 0..I-1, then i = 0..N-1);
 /// - `N * N` recurrent weights `w_ji`, source by source (j, then i);
