@@ -1,4 +1,4 @@
-#include "PacEatingSimulator.h"
+#include <Agents/PacEatingSimulator.h>
 
 #include <algorithm>
 

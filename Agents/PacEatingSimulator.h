@@ -3,8 +3,8 @@
 /// @brief The Pac arena with Pac 0 eating the food one circle after another, by a script that
 /// runs in the step itself.
 
-#include "PacEater.h"
-#include "PacSimulator.h"
+#include <Agents/PacEater.h>
+#include <Agents/PacSimulator.h>
 
 #include <memory>
 #include <optional>
