@@ -94,7 +94,7 @@ TEST(NetworkSpecTest, RefusesBadShapes) {
   expectInvalid([] { NeuralController controller(feedForward({2})); }, "NetworkSpec.layers");
   expectInvalid([] { NeuralController controller(ctrnn(1, 1, 1), 0); },
                 "NeuralController.timestep");
-  expectInvalid([] { NeuralController controller(ctrnn(1, 1, 1), -0.01); },
+  expectInvalid([] { NeuralController controller(ctrnn(1, 1, 1), real(-0.01)); },
                 "NeuralController.timestep");
   expectInvalid(
       [] { NeuralController controller(ctrnn(1, 1, 1), std::numeric_limits<real>::infinity()); },

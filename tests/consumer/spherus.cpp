@@ -28,7 +28,8 @@ int main() {
   genome.parameters.assign(genome.spec.parameterCount(), 0);
   const std::size_t outputBiases = 8 + 35 * 8;
   const double biases[5] = {4, -4, 4, -4, -4};
-  for (std::size_t o = 0; o < 5; ++o) genome.parameters[outputBiases + o] = biases[o];
+  for (std::size_t o = 0; o < 5; ++o)
+    genome.parameters[outputBiases + o] = static_cast<thyrix::real>(biases[o]);
   std::stringstream file;
   genome.write(file);
   const thyrix::Genome read = thyrix::Genome::read(file);
