@@ -54,6 +54,9 @@ class SvgGUI : public GUI {
   void save(const std::string& path) const;
   /// Erases everything drawn, keeping the view, background and settings.
   void clear();
+  /// The elements drawn since construction or clear(), one per line: svg() without the
+  /// document around them (e.g. to group them as one frame of an animation).
+  [[nodiscard]] const std::string& elements() const { return body_; }
 
   /// Width of the picture (pixels).
   [[nodiscard]] int widthPixels() const { return width_; }

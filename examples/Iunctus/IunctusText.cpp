@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
     simulator.setContactSolver(options.run.solver);
     const auto& objects = simulator.objectsToCatch();
     if (options.flag) simulator.useGrasper();
+    examples::AnimationRecorder animation(options.run, {0, 0}, {world.size, world.size});
     for (long step = 1; step <= options.run.steps; ++step) {
       simulator.advanceTime();
       if (step % options.run.every == 0) {
@@ -59,7 +60,9 @@ int main(int argc, char** argv) {
         }
       }
       examples::writeSvgIfDue(options.run, simulator, step, {0, 0}, {world.size, world.size});
+      animation.record(simulator, step);
     }
+    animation.finish();
   } catch (const std::exception& error) {
     std::fprintf(stderr, "IunctusText: %s\n", error.what());
     return 1;

@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
                   world, std::make_unique<RandomController>(options.run.seed), std::move(second));
     simulator->setContactSolver(options.run.solver);
 
+    examples::AnimationRecorder animation(options.run, {0, 0}, {world.size, world.size});
     for (long step = 1; step <= options.run.steps; ++step) {
       simulator->advanceTime();
       if (step % options.run.every == 0) {
@@ -59,7 +60,9 @@ int main(int argc, char** argv) {
                     simulator->foodInside(simulator->pac(1)));
       }
       examples::writeSvgIfDue(options.run, *simulator, step, {0, 0}, {world.size, world.size});
+      animation.record(*simulator, step);
     }
+    animation.finish();
   } catch (const std::exception& error) {
     std::fprintf(stderr, "PacText: %s\n", error.what());
     return 1;

@@ -14,7 +14,9 @@ const char* const consoleOptionsUsage =
     "  --solver S      baraff or gauss-seidel (default baraff)\n"
     "  --every K       print every K-th step (default 1)\n"
     "  --svg DIR       write an SVG picture of the world to DIR every --svg-every steps\n"
-    "  --svg-every K   (default 100)\n";
+    "  --svg-every K   (default 100)\n"
+    "  --animation F   write the episode as an animated SVG F (opens in a browser)\n"
+    "  --animation-every K  a frame every K steps (default 10)\n";
 
 ContactSolverKind parseSolver(std::string_view text) {
   if (text == "baraff") return ContactSolverKind::Baraff;
@@ -26,7 +28,8 @@ ContactSolverKind parseSolver(std::string_view text) {
 int parseConsoleOption(int argc, char** argv, int i, ConsoleOptions& options) {
   const std::string_view option = argv[i];
   if (option != "--steps" && option != "--seed" && option != "--solver" && option != "--every" &&
-      option != "--svg" && option != "--svg-every")
+      option != "--svg" && option != "--svg-every" && option != "--animation" &&
+      option != "--animation-every")
     return 0;
   if (i + 1 >= argc) throw std::invalid_argument(std::string(option) + " needs a value");
   const std::string_view value = argv[i + 1];
@@ -35,6 +38,11 @@ int parseConsoleOption(int argc, char** argv, int i, ConsoleOptions& options) {
   if (option == "--solver") options.solver = parseSolver(value);
   if (option == "--every") options.every = parseNumber<long>(option, value, 1);
   if (option == "--svg-every") options.svgEvery = parseNumber<long>(option, value, 1);
+  if (option == "--animation-every") options.animationEvery = parseNumber<long>(option, value, 1);
+  if (option == "--animation") {
+    if (value.empty()) throw std::invalid_argument("--animation needs a file");
+    options.animation = value;
+  }
   if (option == "--svg") {
     if (value.empty()) throw std::invalid_argument("--svg needs a directory");
     options.svgDirectory = value;
@@ -59,6 +67,12 @@ ConsoleArguments parseConsoleProgram(const ConsoleProgram& program, int argc, ch
       i += used - 1;
       continue;
     }
+    if (!program.fileOption.empty() && option == program.fileOption) {
+      if (i + 1 >= argc) throw std::invalid_argument(std::string(option) + " needs a file");
+      o.file = argv[++i];
+      if (o.file.empty()) throw std::invalid_argument(std::string(option) + " needs a file");
+      continue;
+    }
     if (option != program.countOption)
       throw std::invalid_argument("unknown option: " + std::string(option));
     if (i + 1 >= argc) throw std::invalid_argument(std::string(option) + " needs a value");
@@ -71,6 +85,27 @@ int reportUsageError(const ConsoleProgram& program, const std::exception& error)
   std::fprintf(stderr, "%s: %s\n%s%s", program.name, error.what(), program.usage,
                consoleOptionsUsage);
   return 2;
+}
+
+AnimationRecorder::AnimationRecorder(const ConsoleOptions& options, Vector2 lower, Vector2 upper)
+    : options_(options) {
+  if (options.animation.empty()) return;
+  // Frames at the pace of the simulation: a frame every k steps shows k timesteps.
+  animation_ = std::make_unique<SvgAnimation>(lower, upper, 600,
+                                              0.01 * static_cast<double>(options.animationEvery));
+}
+
+AnimationRecorder::~AnimationRecorder() = default;
+
+void AnimationRecorder::record(const Simulator& simulator, long step) {
+  if (!animation_ || (step % options_.animationEvery != 0 && step != 1)) return;
+  char caption[48];
+  std::snprintf(caption, sizeof caption, "step %ld", step);
+  animation_->addFrame(simulator, {}, caption);
+}
+
+void AnimationRecorder::finish() const {
+  if (animation_) animation_->save(options_.animation);
 }
 
 void writeSvgIfDue(const ConsoleOptions& options, const Simulator& simulator, long step,

@@ -4,9 +4,11 @@
 
 #include <ThyrixLite/ContactSolver.h>
 #include <ThyrixLite/Simulator.h>
+#include <ThyrixLite/SvgAnimation.h>
 
 #include <charconv>
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -36,6 +38,8 @@ struct ConsoleOptions {
   ContactSolverKind solver = ContactSolverKind::Baraff;  ///< --solver
   std::string svgDirectory;  ///< --svg: where to write pictures (none if empty)
   long svgEvery = 100;       ///< --svg-every: a picture every k-th step
+  std::string animation;     ///< --animation: the animated SVG to write (none if empty)
+  long animationEvery = 10;  ///< --animation-every: a frame every k-th step
 };
 
 /// The usage lines of ConsoleOptions, for --help.
@@ -53,6 +57,7 @@ struct ConsoleProgram {
   std::string_view countOption;      ///< its object-count option, e.g. "--objects"
   int defaultCount = 0;              ///< that option's default
   std::string_view flagOption = {};  ///< an on/off option, e.g. "--eat", or none
+  std::string_view fileOption = {};  ///< an option naming a file, e.g. "--genome", or none
 };
 
 /// A console program's parsed options.
@@ -60,6 +65,7 @@ struct ConsoleArguments {
   ConsoleOptions run;  ///< the shared options
   int count = 0;       ///< the count option
   bool flag = false;   ///< the on/off option
+  std::string file;    ///< the file option's value (empty if not given)
 };
 
 /// Parses a console program's command line; --help prints the usage and exits 0.
@@ -68,6 +74,25 @@ ConsoleArguments parseConsoleProgram(const ConsoleProgram& program, int argc, ch
 
 /// Prints @p error and the usage to stderr; returns 2, the status of a bad command line.
 int reportUsageError(const ConsoleProgram& program, const std::exception& error);
+
+/// With --animation, the episode's frames, the world's square [lower, upper] drawn every
+/// --animation-every steps, written to that file by finish(). Without it, does nothing.
+class AnimationRecorder {
+ public:
+  /// Records for @p options, showing [lower, upper].
+  AnimationRecorder(const ConsoleOptions& options, Vector2 lower, Vector2 upper);
+  ~AnimationRecorder();
+  AnimationRecorder(const AnimationRecorder&) = delete;
+  AnimationRecorder& operator=(const AnimationRecorder&) = delete;
+  /// Adds a frame of @p simulator if @p step is due (and the first step).
+  void record(const Simulator& simulator, long step);
+  /// Writes the animation. @throws std::runtime_error if the file cannot be written
+  void finish() const;
+
+ private:
+  const ConsoleOptions& options_;
+  std::unique_ptr<SvgAnimation> animation_;
+};
 
 /// At the steps --svg-every asks for (and only with --svg), writes
 /// `DIR/step_NNNNNN.svg`: the square [lower, upper] of the world, contacts, forces and

@@ -23,6 +23,7 @@ struct WindowProgram {
   std::string_view countOption;      ///< its object-count option, e.g. "--objects"
   int defaultCount = 0;              ///< that option's default
   std::string_view flagOption = {};  ///< an on/off option, e.g. "--grasp", or none
+  std::string_view fileOption = {};  ///< an option naming a file, e.g. "--genome", or none
 };
 
 /// A window program's parsed options.
@@ -32,6 +33,7 @@ struct WindowOptions {
   bool flag = false;                                     ///< the on/off option
   ContactSolverKind solver = ContactSolverKind::Baraff;  ///< --solver
   GuiOptions gui;                                        ///< the GUI's own options
+  std::string file;  ///< the file option's value (empty if not given)
 };
 
 /// Parses a window program's command line; --help prints the usage and exits 0.
@@ -53,6 +55,12 @@ inline WindowOptions parseWindowOptions(const WindowProgram& program, int argc, 
       o.flag = true;
       continue;
     }
+    if (!program.fileOption.empty() && option == program.fileOption) {
+      if (i + 1 >= argc || std::string_view(argv[i + 1]).empty())
+        throw std::invalid_argument(std::string(option) + " needs a file");
+      o.file = argv[++i];
+      continue;
+    }
     if (option != "--seed" && option != "--solver" && option != program.countOption)
       throw std::invalid_argument("unknown option: " + std::string(option));
     if (i + 1 >= argc) throw std::invalid_argument(std::string(option) + " needs a value");
@@ -68,7 +76,8 @@ inline WindowOptions parseWindowOptions(const WindowProgram& program, int argc, 
 }
 
 /// The main() of a window program: parses the command line (status 2 and the usage on a bad
-/// option), builds the SimulationSetup with @p makeSetup(options) and runs the application.
+/// option), builds the SimulationSetup with @p makeSetup(options) (status 1 and its message if
+/// it throws, e.g. on an unreadable file) and runs the application.
 template <class MakeSetup>
 int runWindowProgram(const WindowProgram& program, int argc, char** argv, MakeSetup&& makeSetup) {
   WindowOptions options;
@@ -79,7 +88,13 @@ int runWindowProgram(const WindowProgram& program, int argc, char** argv, MakeSe
                  guiOptionsUsage);
     return 2;
   }
-  SimulationSetup setup = makeSetup(options);
+  SimulationSetup setup;
+  try {
+    setup = makeSetup(options);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "%s: %s\n", program.name, error.what());
+    return 1;
+  }
   setup.solver = options.solver;
   return runSimulationApp(std::move(setup), options.gui, argv[0]);
 }
