@@ -1,0 +1,359 @@
+// SpherusEvolve: evolves a neural controller for Spherus with CMA-ES (or the self-adaptive ES),
+// evaluating each generation in parallel, and writes the run's records to --out: fitness.csv,
+// fitness.svg, best.genome and checkpoint, each replaced atomically. --resume continues a run
+// bit for bit. Run with --help for the options.
+
+#include "SpherusTask.h"
+
+#include <CommandLine.h>
+#include <Controller/Genome.h>
+#include <Evolution/AtomicFile.h>
+#include <Evolution/CmaEs.h>
+#include <Evolution/Evaluate.h>
+#include <Evolution/FitnessHistory.h>
+#include <Evolution/FitnessPlot.h>
+#include <Evolution/ProgressLine.h>
+#include <Evolution/SeedDerivation.h>
+#include <Evolution/SelfAdaptiveEs.h>
+#include <Evolution/StateText.h>
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace {
+
+using namespace thyrix;
+namespace fs = std::filesystem;
+
+const char* const usage =
+    "Usage: SpherusEvolve --out DIR [options]\n"
+    "Evolves a neural controller for Spherus and writes DIR/fitness.csv, DIR/fitness.svg,\n"
+    "DIR/best.genome and DIR/checkpoint.\n"
+    "  --task T            distance (ground covered) or clear (balls pushed to the walls);\n"
+    "                      default distance\n"
+    "  --generations G     generations to reach (default 100)\n"
+    "  --population P      points a generation (default 0: CMA-ES's 4 + 3 ln n)\n"
+    "  --steps S           steps of an episode (default 1000)\n"
+    "  --trials K          episodes per controller; its fitness is their mean (default 1)\n"
+    "  --threads T         threads evaluating (default 1); the files do not depend on it\n"
+    "  --seed N            the run's seed (default 1)\n"
+    "  --network N         ff:H1[,H2...], ff or ctrnn:N (default ff:8, a 35-8-5 network)\n"
+    "  --strategy S        cma-es or sa-es (the self-adaptive ES); default cma-es\n"
+    "  --sigma X           initial step size (default 0.5)\n"
+    "  --objects N         balls in the arena (default 20)\n"
+    "  --fixed-pose        start Spherus in the middle facing +y, not at a pose drawn from\n"
+    "                      the episode's seed\n"
+    "  --checkpoint-every K  write DIR/checkpoint every K generations and at the end\n"
+    "                      (default 10)\n"
+    "  --resume            continue the run in DIR up to --generations\n"
+    "  --help              this text\n";
+
+struct Options {
+  SpherusGoal goal = SpherusGoal::Distance;
+  std::uint64_t generations = 100;
+  std::size_t population = 0;
+  long steps = 1000;
+  std::size_t trials = 1;
+  std::size_t threads = 1;
+  std::uint64_t seed = 1;
+  std::string network = "ff:8";
+  std::string strategy = "cma-es";
+  double sigma = 0.5;
+  int objects = 20;
+  bool fixedPose = false;
+  std::uint64_t checkpointEvery = 10;
+  std::string out;
+  bool resume = false;
+};
+
+double parseSigma(std::string_view text) {
+  double value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || !(value > 0) ||
+      !std::isfinite(value))
+    throw std::invalid_argument("--sigma needs a positive number, not '" + std::string(text) + "'");
+  return value;
+}
+
+Options parse(int argc, char** argv) {
+  using examples::parseNumber;
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view option = argv[i];
+    if (option == "--help") {
+      std::fputs(usage, stdout);
+      std::exit(0);
+    }
+    if (option == "--resume") {
+      o.resume = true;
+      continue;
+    }
+    if (option == "--fixed-pose") {
+      o.fixedPose = true;
+      continue;
+    }
+    static constexpr std::string_view valued[] = {
+        "--task", "--generations", "--population", "--steps",   "--trials",           "--threads",
+        "--seed", "--network",     "--sigma",      "--objects", "--checkpoint-every", "--strategy",
+        "--out"};
+    if (std::find(std::begin(valued), std::end(valued), option) == std::end(valued))
+      throw std::invalid_argument("unknown option: " + std::string(option));
+    if (i + 1 >= argc) throw std::invalid_argument(std::string(option) + " needs a value");
+    const std::string_view value = argv[++i];
+    if (option == "--task")
+      o.goal = parseSpherusGoal(value);
+    else if (option == "--generations")
+      o.generations = parseNumber<std::uint64_t>(option, value, 1);
+    else if (option == "--population")
+      o.population = parseNumber<std::size_t>(option, value, 0);
+    else if (option == "--steps")
+      o.steps = parseNumber<long>(option, value, 1);
+    else if (option == "--trials")
+      o.trials = parseNumber<std::size_t>(option, value, 1);
+    else if (option == "--threads")
+      o.threads = parseNumber<std::size_t>(option, value, 1);
+    else if (option == "--seed")
+      o.seed = parseNumber<std::uint64_t>(option, value, 0);
+    else if (option == "--network") {
+      (void)parseSpherusNetwork(value);  // refused here, with the usage, if malformed
+      o.network = value;
+    } else if (option == "--sigma")
+      o.sigma = parseSigma(value);
+    else if (option == "--objects")
+      o.objects = parseNumber<int>(option, value, 0);
+    else if (option == "--checkpoint-every")
+      o.checkpointEvery = parseNumber<std::uint64_t>(option, value, 1);
+    else if (option == "--strategy") {
+      if (value != "cma-es" && value != "sa-es")
+        throw std::invalid_argument("--strategy must be cma-es or sa-es, not '" +
+                                    std::string(value) + "'");
+      o.strategy = value;
+    } else {  // --out
+      if (value.empty()) throw std::invalid_argument("--out needs a directory");
+      o.out = value;
+    }
+  }
+  if (o.population == 1) throw std::invalid_argument("--population needs 2 or more (or 0)");
+  if (o.threads > 1024) throw std::invalid_argument("--threads needs at most 1024");
+  if (o.out.empty()) throw std::invalid_argument("--out DIR is required");
+  return o;
+}
+
+// The run: the strategy, the history and the best controller so far.
+struct Run {
+  std::unique_ptr<Strategy> strategy;
+  std::vector<GenerationRecord> history;
+  double bestFitness = -INFINITY;
+  std::vector<double> best;  // the best point evaluated so far
+};
+
+std::unique_ptr<Strategy> makeStrategy(const Options& o, std::size_t dimension) {
+  const auto seed = static_cast<std::uint32_t>(splitMix64(o.seed ^ 0x5350484552555345ull));
+  std::vector<double> start(dimension, 0.0);
+  if (o.strategy == "sa-es")
+    return std::make_unique<SelfAdaptiveEs>(std::move(start), o.sigma,
+                                            o.population == 0 ? 20 : o.population, 0, seed);
+  return std::make_unique<CmaEs>(std::move(start), o.sigma, o.population, seed);
+}
+
+// The options a checkpoint must share with the command line to be continued.
+void writeSettings(StateWriter& w, const Options& o) {
+  w.word("task", toString(o.goal));
+  w.word("network", o.network);
+  w.word("strategy", o.strategy);
+  w.integer("population", o.population);
+  w.integer("steps", static_cast<std::uint64_t>(o.steps));
+  w.integer("trials", o.trials);
+  w.integer("seed", o.seed);
+  w.integer("objects", static_cast<std::uint64_t>(o.objects));
+  w.word("fixed-pose", o.fixedPose ? "yes" : "no");
+  w.doubles("sigma0", {&o.sigma, 1});
+}
+
+std::string checkpointText(const Options& o, const Run& run) {
+  std::ostringstream text;
+  StateWriter w(text);
+  w.word("thyrix-spherus-evolve", "1");
+  writeSettings(w, o);
+  w.integer("generations-done", run.history.size());
+  for (const GenerationRecord& r : run.history) {
+    const double values[4] = {static_cast<double>(r.generation), r.best, r.mean, r.bestSoFar};
+    w.doubles("record", values);
+  }
+  w.doubles("best-fitness", {&run.bestFitness, 1});
+  w.doubles("best", run.best);
+  run.strategy->save(text);
+  w.word("end", "checkpoint");
+  return text.str();
+}
+
+// Reads DIR/checkpoint into @p run, refusing one written with other settings.
+void readCheckpoint(const fs::path& path, const Options& o, Run& run) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("--resume: cannot read " + path.string());
+  StateReader r(in, "checkpoint " + path.string());
+  if (r.word("thyrix-spherus-evolve") != "1")
+    r.fail("is not a SpherusEvolve checkpoint of version 1");
+  std::ostringstream expected;
+  StateWriter w(expected);
+  writeSettings(w, o);
+  std::istringstream settings(expected.str());
+  for (std::string line; std::getline(settings, line);) {
+    const std::string key = line.substr(0, line.find(' '));
+    std::string found;
+    if (key == "sigma0") {
+      const double sigma = r.doubles("sigma0", 1)[0];
+      if (sigma != o.sigma)
+        r.fail("was written with --sigma " + std::to_string(sigma) + ", not " +
+               std::to_string(o.sigma));
+      continue;
+    }
+    found = r.word(key);
+    const std::string wanted = line.substr(key.size() + 1);
+    if (found != wanted)
+      r.fail("was written with --" + key + " " + found + ", not " + wanted +
+             " (resume with the run's own options)");
+  }
+  const std::uint64_t done = r.integer("generations-done", 1u << 30);
+  std::vector<GenerationRecord> history;
+  for (std::uint64_t g = 0; g < done; ++g) {
+    const std::vector<double> v = r.doubles("record", 4);
+    if (v[0] != static_cast<double>(g + 1)) r.fail("has records out of order");
+    history.push_back({g + 1, v[1], v[2], v[3]});
+  }
+  const double bestFitness = r.doubles("best-fitness", 1)[0];
+  std::vector<double> best = r.doubles("best", run.strategy->dimension());
+  try {
+    run.strategy->restore(in);
+  } catch (const std::runtime_error& error) {
+    throw std::runtime_error("checkpoint " + path.string() + ": " + error.what());
+  }
+  if (run.strategy->generation() != done)
+    r.fail("has a strategy at generation " + std::to_string(run.strategy->generation()) + ", not " +
+           std::to_string(done));
+  StateReader tail(in, "checkpoint " + path.string() + " (after the strategy)");
+  if (tail.word("end") != "checkpoint") tail.fail("does not end with 'end checkpoint'");
+  tail.end();
+  run.history = std::move(history);
+  run.bestFitness = bestFitness;
+  run.best = std::move(best);
+}
+
+void writeRecords(const fs::path& dir, const Options& o, const NetworkSpec& spec, const Run& run,
+                  bool checkpoint) {
+  writeFileAtomically(dir / "fitness.csv", fitnessCsv(run.history));
+  writeFileAtomically(
+      dir / "fitness.svg",
+      fitnessPlotSvg(run.history, "SpherusEvolve --task " + std::string(toString(o.goal)) +
+                                      " --network " + o.network));
+  if (!run.best.empty()) {
+    Genome genome;
+    genome.spec = spec;
+    genome.parameters.assign(run.best.begin(), run.best.end());
+    std::ostringstream text;
+    genome.write(text);
+    writeFileAtomically(dir / "best.genome", text.str());
+  }
+  if (checkpoint) writeFileAtomically(dir / "checkpoint", checkpointText(o, run));
+}
+
+int evolve(const Options& o) {
+  SpherusTask task;
+  task.goal = o.goal;
+  task.network = parseSpherusNetwork(o.network);
+  task.stepCount = o.steps;
+  task.arena.objects = o.objects;
+  task.randomPose = !o.fixedPose;
+  // One episode built before anything is created or written, so that options the arena refuses (too many
+  // balls) are reported without leaving a run behind.
+  (void)task.makeWorld(std::vector<double>(task.network.parameterCount(), 0.0), o.seed);
+  const fs::path dir = o.out;
+  const fs::path checkpointPath = dir / "checkpoint";
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error || !fs::is_directory(dir))
+    throw std::runtime_error("cannot create the directory --out " + o.out +
+                             (error ? ": " + error.message() : ""));
+  if (!o.resume && fs::exists(checkpointPath))
+    throw std::runtime_error(o.out + " already holds a run (" + checkpointPath.string() +
+                             "): continue it with --resume or choose another --out");
+  if (o.resume && !fs::exists(checkpointPath))
+    throw std::runtime_error("--resume: no checkpoint in " + o.out);
+
+  Run run;
+  run.strategy = makeStrategy(o, task.network.parameterCount());
+  if (o.resume) readCheckpoint(checkpointPath, o, run);
+  // Written before any work, so an unwritable directory is found at once.
+  writeRecords(dir, o, task.network, run, true);
+
+  ThreadPool pool(o.threads);
+  ProgressLine progress(stdout);
+  EvaluationOptions evaluation;
+  evaluation.trials = o.trials;
+  evaluation.seed = o.seed;
+  using Clock = std::chrono::steady_clock;
+  const auto begin = Clock::now();
+  const std::uint64_t first = run.history.size() + 1;
+  for (std::uint64_t g = first; g <= o.generations; ++g) {
+    const auto population = run.strategy->ask();
+    evaluation.generation = g;
+    const auto start = Clock::now();
+    const std::vector<double> fitness = evaluate(task, population, evaluation, pool);
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const auto bestIndex = static_cast<std::size_t>(
+        std::max_element(fitness.begin(), fitness.end()) - fitness.begin());
+    if (fitness[bestIndex] > run.bestFitness) {
+      run.bestFitness = fitness[bestIndex];
+      run.best = population[bestIndex];
+    }
+    run.strategy->tell(fitness);
+    double sum = 0;
+    for (double f : fitness) sum += f;
+    run.history.push_back(
+        {g, fitness[bestIndex], sum / static_cast<double>(fitness.size()), run.bestFitness});
+    writeRecords(dir, o, task.network, run, g % o.checkpointEvery == 0 || g == o.generations);
+
+    const double elapsed = std::chrono::duration<double>(Clock::now() - begin).count();
+    Progress p;
+    p.generation = g;
+    p.generations = o.generations;
+    p.best = run.history.back().best;
+    p.mean = run.history.back().mean;
+    p.bestSoFar = run.bestFitness;
+    p.evaluationsPerSecond =
+        seconds > 0 ? static_cast<double>(fitness.size() * o.trials) / seconds : 0;
+    p.secondsLeft =
+        elapsed / static_cast<double>(g - first + 1) * static_cast<double>(o.generations - g);
+    progress.update(p);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  try {
+    options = parse(argc, argv);
+  } catch (const std::invalid_argument& error) {
+    std::fprintf(stderr, "SpherusEvolve: %s\n%s", error.what(), usage);
+    return 2;
+  }
+  try {
+    return evolve(options);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "SpherusEvolve: %s\n", error.what());
+    return 1;
+  }
+}
