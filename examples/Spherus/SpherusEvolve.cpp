@@ -275,8 +275,8 @@ int evolve(const Options& o) {
   task.stepCount = o.steps;
   task.arena.objects = o.objects;
   task.randomPose = !o.fixedPose;
-  // One episode built before anything is created or written, so that options the arena refuses (too many
-  // balls) are reported without leaving a run behind.
+  // One episode built before anything is created or written, so that options the arena refuses (too
+  // many balls) are reported without leaving a run behind.
   (void)task.makeWorld(std::vector<double>(task.network.parameterCount(), 0.0), o.seed);
   const fs::path dir = o.out;
   const fs::path checkpointPath = dir / "checkpoint";
