@@ -15,7 +15,7 @@ struct Reach {
   std::unique_ptr<thyrix::Simulator> makeWorld(const std::vector<double>& g, std::uint64_t) const {
     auto world = std::make_unique<thyrix::Simulator>(thyrix::real(0.01));
     world->setGravity({static_cast<thyrix::real>(g[0]), 0});
-    world->registerObject(std::make_unique<thyrix::Circle>(0.5, 1.0));
+    world->registerObject(std::make_unique<thyrix::Circle>(thyrix::real(0.5), thyrix::real(1)));
     return world;
   }
   double fitness(const thyrix::Simulator& world) const {
