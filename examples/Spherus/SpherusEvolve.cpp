@@ -145,7 +145,10 @@ Options parse(int argc, char** argv) {
     }
   }
   if (o.population == 1) throw std::invalid_argument("--population needs 2 or more (or 0)");
+  // Bounds far above any real run, so that a typo cannot ask for all the memory.
   if (o.threads > 1024) throw std::invalid_argument("--threads needs at most 1024");
+  if (o.population > 100000) throw std::invalid_argument("--population needs at most 100000");
+  if (o.trials > 10000) throw std::invalid_argument("--trials needs at most 10000");
   if (o.out.empty()) throw std::invalid_argument("--out DIR is required");
   return o;
 }
