@@ -114,6 +114,7 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
       borderShapes_.push_back(shape);
       gridSlot_.push_back(~0u);
     } else {
+      smallestRadius_ = std::min(smallestRadius_, primitive->radius());
       gridSlot_.push_back(static_cast<std::uint32_t>(gridShapes_.size()));
       gridShapes_.push_back(shape);
       gridBoxes_.push_back({});

@@ -13,6 +13,7 @@
 #include <ThyrixLite/Primitive.h>
 #include <ThyrixLite/World.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <utility>
@@ -32,6 +33,9 @@ struct StepStatistics {
   std::size_t gaussSeidelSweeps = 0;  ///< sweeps summed over the islands Gauss-Seidel solved
   std::size_t baraffPivots = 0;       ///< pivots summed over the islands Baraff solved
   std::size_t baraffFallbacks = 0;    ///< islands Baraff gave to Gauss-Seidel
+  /// Detections run again because the solve moved a shape past a border that detection had
+  /// not reached (Simulator::advanceTime()); 0 in almost every step.
+  std::size_t redetections = 0;
 };
 
 /// A World that advances in time with quasistatic dynamics.
@@ -107,7 +111,11 @@ class Simulator : public World {
         [](PhysicalObject& object) { object.computeDerivativesWithoutContacts(); });
   }
   /// Phase 6: contact forces (the chosen solver, island by island), then final velocities;
-  /// the tactile sensors then read the forces.
+  /// the tactile sensors then read the forces. In a world without articulated agents, where the
+  /// solved velocities would carry an end of a shape past a border that was out of its reach at
+  /// detection, the contacts are detected again (phase 2, and 3 if they were listed) with
+  /// margins that cover the step's motion, and solved again from the free velocities, up to 4
+  /// times (StepStatistics::redetections; the users' guide, "Walls").
   void solveContacts();
 
   /// Rest skipping (exact, on by default): a shape whose pose did not change since the last
@@ -411,6 +419,9 @@ class Simulator : public World {
   void clearContactLists();
   /// Solves @p island, a rigid island one of whose contacts does not hold without force.
   void solveIsland(std::span<const std::uint32_t> island);
+  /// solveContacts() once: @return true if it stopped short, its velocities carrying a shape
+  /// past a border unseen (only if @p mayRedetect), leaving the objects' free velocities.
+  bool solveOnce(bool mayRedetect);
   void solveGeneralIsland(std::span<const std::uint32_t> island);
   /// Shape @p shape is a circle that is its own body (not a part of a composed body): its
   /// contacts' normals go through its centre. Reads the shape table, not the objects.
@@ -422,6 +433,21 @@ class Simulator : public World {
     return multiBodies_[body] != nullptr || !objects[body].fixed;
   }
   void updateTactileSensors();
+  // SimulatorContainment.cpp: whether the solve's velocities (bodies_) carry an end of a shape
+  // of the @p moved bodies past a border it was out of reach of at detection; the detection
+  // again, with margins that cover this step's motion.
+  [[nodiscard]] bool outranMargins(std::span<const std::uint32_t> moved) const;
+  [[nodiscard]] bool crossesUnseenBorder(std::uint32_t shape, Vector2 end, Vector2 displacement,
+                                         real reach) const;
+  void widenMargins();
+  void redetect();
+  // After Gauss-Seidel: the bodies of @p island whose wall contacts it left violated by more
+  // than their margin in the step get those contacts solved alone (holdAtWalls()).
+  void holdWalls(std::span<const std::uint32_t> island);
+  void holdAtWalls(std::span<const std::uint32_t> island, std::uint32_t body);
+  [[nodiscard]] static bool immovable(const SolverBody& body) {
+    return body.inverseMass == 0 && body.inverseInertia == 0;
+  }
 
   std::unique_ptr<Integrator> integrator_;  // never null
   bool eulerIntegrator_ = true;             // integrator_ is exactly Integrator: its fast loop
@@ -556,6 +582,15 @@ class Simulator : public World {
   real dragMaxStep_ = 0;  // metres per step, from the dragged body's size
   Vector2 dragLocalPoint_;
   Vector2 dragTarget_;
+
+  // Containment (SimulatorContainment.cpp), read off the common path: kept last, after the
+  // members every step reads.
+  // The most detections solveContacts() runs again in one step (each widens the margins to four
+  // times the motion of the last solve, which the new contacts mostly slow down).
+  static constexpr std::size_t maxRedetections = 4;
+  bool widening_ = false;  // this detection recomputes every shape, with widenMargins()' margins
+  bool marginsWidened_ = false;  // the margins are widenMargins()': the next detection resets them
+  real smallestRadius_ = realMax;  // of the shapes other than borders registered so far
 };
 
 }  // namespace thyrix

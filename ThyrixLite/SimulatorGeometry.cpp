@@ -644,9 +644,12 @@ THYRIX_NO_INLINE void Simulator::gatherExtentsUpTo(std::uint32_t slot) {
 
 void Simulator::updateGeometry() {
   // A new margin changes every shape's geometry; without rest skipping nothing is kept.
-  const bool newFraction = !sameBits(settings_.speculativeFraction, geometryFraction_);
-  const bool everything =
-      !restSkipping || newFraction || !sameBits(settings_.speculativeTravel, geometryTravel_);
+  // (Margins widened for one detection (widenMargins()) are set back at the next.)
+  const bool newFraction =
+      marginsWidened_ || !sameBits(settings_.speculativeFraction, geometryFraction_);
+  marginsWidened_ = false;
+  const bool everything = !restSkipping || newFraction || widening_ ||
+                          !sameBits(settings_.speculativeTravel, geometryTravel_);
   geometryFraction_ = settings_.speculativeFraction;
   geometryTravel_ = settings_.speculativeTravel;
   if (newFraction)  // the margins are kept, and depend on nothing else (radii are fixed)

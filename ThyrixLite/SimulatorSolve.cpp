@@ -11,6 +11,22 @@
 namespace thyrix {
 
 void Simulator::solveContacts() {
+  // Contacts are detected within a margin that covers the last step's motion, but under
+  // F = m v the solve's velocities do not follow the last step's: a light lever pushed near its
+  // pivot by a heavy body swings its far end many margins in one step. Where that carries an
+  // end past a border unseen, the contacts are detected again with margins that cover the
+  // motion (and listed again if they were), and solved again: the objects still hold their
+  // free velocities.
+  const bool listed = listedCount_ != 0;
+  statistics_.redetections = 0;
+  while (solveOnce(!hasMultiBodies_ && statistics_.redetections < maxRedetections)) {
+    ++statistics_.redetections;
+    redetect();
+    if (listed) indexContacts();
+  }
+}
+
+bool Simulator::solveOnce(bool mayRedetect) {
   statistics_.islands = statistics_.solvedIslands = 0;
   statistics_.gaussSeidelSweeps = statistics_.baraffPivots = statistics_.baraffFallbacks = 0;
   const real dt = timestep();
@@ -28,7 +44,7 @@ void Simulator::solveContacts() {
   contactsSolved_ = true;
   if (contacts.empty() && internal_.empty()) {
     updateTactileSensors();
-    return;
+    return false;
   }
 
   // A row's lever arms and target, one formula for the judgment below and the rows. A circle
@@ -70,7 +86,7 @@ void Simulator::solveContacts() {
       });
   if (forceFree) {  // no force: contacts and object contact lists already say 0
     updateTactileSensors();
-    return;
+    return false;
   }
 
   // The rows, then their bodies, then the islands. Only the bodies that rows touch take part
@@ -191,6 +207,12 @@ void Simulator::solveContacts() {
     }
     solveIsland(island);
   }
+  if (mayRedetect && outranMargins({touched, movedCount})) {
+    // Detected again: the objects keep their free velocities, the contacts these forces (the
+    // next solve's warm start).
+    for (std::size_t k = 0; k < contacts.size(); ++k) contacts.items_[k].force = rows_[k].force;
+    return true;
+  }
   for (std::size_t t = 0; t < movedCount; ++t) {
     const std::uint32_t i = touched[t];
     PhysicalObject& object = objects[i];
@@ -205,6 +227,7 @@ void Simulator::solveContacts() {
   if (listedCount_ != 0)
     for (ContactInfo& info : objectContacts_) info.force = rows_[info.index].force;
   updateTactileSensors();
+  return false;
 }
 
 void Simulator::solveGeneralIsland(std::span<const std::uint32_t> island) {
@@ -318,7 +341,11 @@ void Simulator::solveIsland(std::span<const std::uint32_t> island) {
   }
   // The rows hold the warm start's forces (solveContacts()), or 0: Gauss-Seidel adds their
   // velocities as it copies the island.
-  statistics_.gaussSeidelSweeps +=
-      static_cast<std::size_t>(gaussSeidel_.solve(island, rows_, bodies_, settings_));
+  const int sweeps = gaussSeidel_.solve(island, rows_, bodies_, settings_);
+  statistics_.gaussSeidelSweeps += static_cast<std::size_t>(sweeps);
+  // (Stopped by its cap: its error may be large. Converged, it is within the tolerance.)
+  if (sweeps >=
+      std::min(settings_.gaussSeidelMaxIterations, settings_.gaussSeidelMaxIterationsInHeightOrder))
+    holdWalls(island);
 }
 }  // namespace thyrix

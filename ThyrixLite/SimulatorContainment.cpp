@@ -1,0 +1,148 @@
+/// @file SimulatorContainment.cpp
+/// @brief What keeps shapes inside the borders whatever the mass ratios: phase 6's check that
+/// the solved motion stays within the walls detection saw (with the detection again, with
+/// margins that cover the motion, when it does not), and Gauss-Seidel's error kept off walls.
+#include <ThyrixLite/Simulator.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace thyrix {
+namespace {
+
+// How far a point of a body moves in @p dt at the body's velocity @p v, @p omega, @p arm from
+// its centre, bounded from above (|dx| + |dy|: no square root).
+real travelBound(Vector2 v, real omega, Vector2 arm, real dt) {
+  const Vector2 velocity = v + arm.perpendicular() * omega;
+  return (std::abs(velocity.x) + std::abs(velocity.y)) * dt;
+}
+
+}  // namespace
+
+bool Simulator::outranMargins(std::span<const std::uint32_t> moved) const {
+  // Detection made a contact for every end of a shape within its margin plus travel of a
+  // border: an end that moves less cannot cross a border unseen (the common case, one test per
+  // end). One that moves more is checked against each border.
+  const real dt = timestep();
+  // Every shape's reach is at least the margin of the smallest radius: a body none of whose
+  // points moves farther (judged from its box, which its centre of mass is in) needs no more.
+  const real leastReach = settings_.speculativeFraction * smallestRadius_;
+  for (const std::uint32_t i : moved) {
+    const SolverBody& body = bodies_[i];
+    const PhysicalObject& object = objects[i];
+    const Vector2 size = object.boxMax - object.boxMin;
+    if ((std::abs(body.v.x) + std::abs(body.v.y) + std::abs(body.omega) * (size.x + size.y)) * dt <=
+        leastReach)
+      continue;
+    const Vector2 r = object.r;
+    const BodyState& state = bodyStates_[i];
+    for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
+      const ShapeGeometry& g = geometry_[s];
+      const real reach = g.travel + g.margin;
+      // (A circle's axis is its centre twice: one end.)
+      const int ends = shapes_[s].type == ShapeType::Circle ? 1 : 2;
+      for (int e = 0; e < ends; ++e) {
+        const Vector2 end = e == 0 ? g.p0 : g.p1;
+        if (travelBound(body.v, body.omega, end - r, dt) <= reach) continue;
+        const Vector2 displacement = (body.v + (end - r).perpendicular() * body.omega) * dt;
+        if (crossesUnseenBorder(s, end, displacement, reach)) return true;
+      }
+    }
+  }
+  return false;
+}
+
+bool Simulator::crossesUnseenBorder(std::uint32_t shape, Vector2 end, Vector2 displacement,
+                                    real reach) const {
+  const Shape& moving = shapes_[shape];
+  const real radius = geometry_[shape].radius;
+  for (const std::uint32_t border : borderShapes_) {
+    const Shape& wall = shapes_[border];
+    if (wall.body == moving.body || (wall.group != 0 && wall.group == moving.group)) continue;
+    const ShapeGeometry& line = geometry_[border];  // point p0, normal p1
+    const real gap = dot(end - line.p0, line.p1) - radius;
+    // (At or beyond the reach, as the narrow phase judges it: no contact for this end.)
+    if (gap >= reach && gap + dot(displacement, line.p1) < 0) return true;
+  }
+  return false;
+}
+
+void Simulator::widenMargins() {
+  // Every movable body's shapes get a margin of four times what they move this step (the
+  // solve's velocities where it ran, else the free ones), so that the next solve, which may
+  // move them faster, still sees every border they can reach. (Travel is 0 in a detection at
+  // the same poses: the margin alone must cover the motion.)
+  const real dt = timestep();
+  for (std::uint32_t i = 0; i < objects.size(); ++i) {
+    const PhysicalObject& object = objects[i];
+    if (object.fixed) continue;
+    const bool solved = touchedStamp_[i] == stamp_;
+    const Vector2 v = solved ? bodies_[i].v : object.v;
+    const real omega = solved ? bodies_[i].omega : object.omega;
+    const BodyState& state = bodyStates_[i];
+    for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
+      ShapeGeometry& g = geometry_[s];
+      const real travel = std::max(travelBound(v, omega, g.p0 - object.r, dt),
+                                   travelBound(v, omega, g.p1 - object.r, dt));
+      g.margin = std::max(settings_.speculativeFraction * g.radius, 4 * travel);
+    }
+  }
+}
+
+void Simulator::redetect() {
+  widenMargins();
+  eraseContacts();
+  marginsWidened_ = false;  // (the margins just set are this detection's)
+  widening_ = true;         // every shape's geometry again, with the margins just set
+  detectContacts();
+  widening_ = false;
+  marginsWidened_ = true;  // the next detection sets them back
+}
+
+void Simulator::holdWalls(std::span<const std::uint32_t> island) {
+  // Gauss-Seidel stopped at its cap leaves an error in the rows; where a light body carries a
+  // load between heavy ones it can be many times the body's size per step. Between movable
+  // bodies such an error is an overlap that the next steps push apart, but against an
+  // immovable body it carries the shape through a wall. So a body whose wall contact is left
+  // violated by more than its margin in the step gets its wall rows solved alone, the walls
+  // as the last word: the error stays between bodies.
+  const real dt = timestep();
+  const std::size_t contactCount = contacts.size();
+  for (const std::uint32_t k : island) {
+    if (k >= contactCount) continue;
+    const ContactConstraint& row = rows_[k];
+    const bool wallA = immovable(bodies_[row.a]);
+    if (wallA == immovable(bodies_[row.b])) continue;
+    const GlobalContactInfo& c = contacts.items_[k];
+    const real margin =
+        settings_.speculativeFraction * geometry_[wallA ? c.shapeB : c.shapeA].radius;
+    const real violation = row.target - row.normalVelocity(bodies_[row.a], bodies_[row.b]);
+    if (violation * dt > margin) holdAtWalls(island, wallA ? row.b : row.a);
+  }
+}
+
+void Simulator::holdAtWalls(std::span<const std::uint32_t> island, std::uint32_t body) {
+  // Projected Gauss-Seidel on this body's rows against immovable bodies only: they move this
+  // body alone, a small problem that converges in a few sweeps.
+  constexpr int maxSweeps = 100;
+  for (int sweep = 0; sweep < maxSweeps; ++sweep) {
+    real largest = 0;
+    for (const std::uint32_t k : island) {
+      ContactConstraint& row = rows_[k];
+      SolverBody& a = bodies_[row.a];
+      SolverBody& b = bodies_[row.b];
+      const bool wallRow = (row.a == body && immovable(b)) || (row.b == body && immovable(a));
+      if (!wallRow || k >= contacts.size()) continue;
+      const real response = row.selfResponse(a, b);
+      const real force =
+          std::max(real(0), row.force - (row.normalVelocity(a, b) - row.target) / response);
+      const real change = force - row.force;
+      row.force = force;
+      row.applyImpulse(change, a, b);
+      largest = std::max(largest, std::abs(change) * response);
+    }
+    if (largest <= settings_.gaussSeidelTolerance) return;
+  }
+}
+
+}  // namespace thyrix
