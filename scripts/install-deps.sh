@@ -2,6 +2,8 @@
 # Installs what building and testing Thyrix needs on Debian 12 (bookworm).
 set -euo pipefail
 packages=(cmake g++ make libgtest-dev libbenchmark-dev doxygen)
+# The Python package (python/) and its tests and examples.
+packages+=(pybind11-dev python3-dev python3-numpy python3-pytest python3-deap python3-matplotlib)
 # The GUI: wxWidgets to build it; Xvfb, xdotool and python3 for its tests (tests/gui/).
 if [ "${THYRIX_WITH_GUI:-0}" = 1 ]; then packages+=(libwxgtk3.2-dev xvfb xdotool python3); fi
 missing=()

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds and runs every test of Thyrix, warnings as errors:
-#   1. Release, real = double, with the wxWidgets front-end when wxWidgets is installed;
+#   1. Release, real = double, with the wxWidgets front-end when wxWidgets is installed, and
+#      the Python package with its pytest tests (the CTest test Python.pytest);
 #   2. an installed Thyrix found by find_package from another project;
 #   3. Debug under AddressSanitizer + UndefinedBehaviorSanitizer, with the front-end too;
 #   4. Release, real = float.
