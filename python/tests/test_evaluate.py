@@ -18,16 +18,18 @@ def cxx_evaluate(reference, genomes, task, steps, network, trials, threads, seed
     return np.array([float.fromhex(line) for line in result.stdout.split()])
 
 
-@pytest.mark.parametrize("task,network,trials", [("distance", "ff:8", 2), ("clear", "ctrnn:3", 1)])
-def test_the_same_numbers_as_the_cpp_evaluate(evaluate_reference, task, network, trials):
+@pytest.mark.parametrize("task,network,trials,steps", [("distance", "ff:8", 2, 200),
+                                                       ("distance", "ctrnn:3", 1, 200),
+                                                       ("clear", "ff:8", 1, 3000)])
+def test_the_same_numbers_as_the_cpp_evaluate(evaluate_reference, task, network, trials, steps):
     dimension = thyrix.spherus_network(network).parameter_count
     genomes = np.random.default_rng(9).normal(0, 1, size=(6, dimension))
-    expected = cxx_evaluate(evaluate_reference, genomes, task, 200, network, trials, 2, 77, 3)
-    got = thyrix.evaluate(genomes, task=task, steps=200, network=network, trials=trials,
+    expected = cxx_evaluate(evaluate_reference, genomes, task, steps, network, trials, 2, 77, 3)
+    got = thyrix.evaluate(genomes, task=task, steps=steps, network=network, trials=trials,
                           threads=1, seed=77, generation=3)
     assert got.shape == (6,) and got.dtype == np.float64
     assert np.array_equal(got, expected)
-    assert len(set(got.tolist())) == 6  # the genomes do differ
+    assert len(set(got.tolist())) >= 3  # the genomes do differ
 
 
 def test_the_same_numbers_whatever_the_threads():
