@@ -69,7 +69,8 @@ def main(argv=None):
         for generation in range(options.generations):
             if generation > 0:
                 elite = toolbox.clone(tools.selBest(population, 1)[0])
-                offspring = [toolbox.clone(i) for i in toolbox.select(population, len(population) - 1)]
+                chosen = toolbox.select(population, len(population) - 1)
+                offspring = [toolbox.clone(individual) for individual in chosen]
                 for a, b in zip(offspring[::2], offspring[1::2]):
                     if random.random() < 0.5:
                         toolbox.mate(a, b)

@@ -109,21 +109,21 @@ void bindAgents(py::module_& m) {
 
   py::class_<PacSimulator, Simulator>(m, "PacSimulator",
                                       "Two Pacs and food circles in a walled arena.")
-      .def(py::init([](int food, double size, std::uint32_t seed, double timestep,
-                       py::handle first, py::handle second) {
+      .def(py::init([](int food, double size, std::uint32_t seed, double timestep, py::handle first,
+                       py::handle second) {
              PacSimulator::Options options;
              options.food = food;
              options.size = static_cast<real>(size);
              options.seed = seed;
              options.timestep = static_cast<real>(timestep);
-             return std::make_unique<PacSimulator>(options,
-                                                   controllerFrom(first, options.timestep),
+             return std::make_unique<PacSimulator>(options, controllerFrom(first, options.timestep),
                                                    controllerFrom(second, options.timestep));
            }),
            py::arg("food") = 16, py::arg("size") = 8.0, py::arg("seed") = 1,
            py::arg("timestep") = 0.01, py::arg("first") = py::none(),
-           py::arg("second") = py::none(), "first, second: the Pacs' controllers, as for "
-                                             "SpherusSimulator.")
+           py::arg("second") = py::none(),
+           "first, second: the Pacs' controllers, as for "
+           "SpherusSimulator.")
       .def(
           "pac",
           [](const PacSimulator& s, int i) -> Pac& {
@@ -133,7 +133,9 @@ void bindAgents(py::module_& m) {
           py::arg("index"), py::return_value_policy::reference_internal, "Pac 0 or 1.")
       .def_property_readonly(
           "food",
-          [](py::object self) { return circleViews(self.cast<const PacSimulator&>().food(), self); },
+          [](py::object self) {
+            return circleViews(self.cast<const PacSimulator&>().food(), self);
+          },
           "The food circles.")
       .def("food_inside", &PacSimulator::foodInside, py::arg("pac"),
            "Food circles inside the ring of `pac`.");
@@ -155,7 +157,8 @@ void bindAgents(py::module_& m) {
                  options, controllerFrom(controller, options.timestep));
            }),
            py::arg("objects") = 1, py::arg("size") = 8.0, py::arg("seed") = 1,
-           py::arg("timestep") = 0.01, py::arg("controller") = py::none())
+           py::arg("timestep") = 0.01, py::arg("controller") = py::none(),
+           "controller: as for SpherusSimulator.")
       .def_property_readonly("iunctus", &IunctusSimulator::iunctus,
                              py::return_value_policy::reference_internal, "The agent.")
       .def_property_readonly(

@@ -66,7 +66,8 @@ void bindControllers(py::module_& m) {
   py::class_<NeuralController, Controller>(
       m, "NeuralController",
       "A feed-forward or CTRNN network whose parameters are one flat vector; outputs in [0, 1].")
-      .def(py::init<NetworkSpec, real>(), py::arg("spec"), py::arg("timestep") = real(0.01))
+      .def(py::init<NetworkSpec, real>(), py::arg("spec"), py::arg("timestep") = real(0.01),
+           "A network of shape `spec` with all parameters 0; `timestep` (s) steps a CTRNN.")
       .def_property_readonly("spec", &NeuralController::spec, "The network's shape.")
       .def_property_readonly("parameter_count", &NeuralController::parameterCount,
                              "Length of the parameter vector.")
@@ -79,8 +80,8 @@ void bindControllers(py::module_& m) {
       .def(
           "control",
           [](NeuralController& c, py::handle sensors) {
-            const auto in = checkedArray(
-                sensors, {static_cast<py::ssize_t>(c.spec().inputCount())}, "sensors");
+            const auto in =
+                checkedArray(sensors, {static_cast<py::ssize_t>(c.spec().inputCount())}, "sensors");
             py::array_t<real> out(static_cast<py::ssize_t>(c.spec().outputCount()));
             c.control({in.data(), static_cast<std::size_t>(in.size())},
                       {out.mutable_data(), static_cast<std::size_t>(out.size())});
@@ -92,10 +93,10 @@ void bindControllers(py::module_& m) {
   py::class_<Genome>(m, "Genome", "A network's shape and parameters, saved as a text file.")
       .def(py::init([](const NetworkSpec& spec, py::handle parameters) {
              spec.validate();
-             return Genome{spec,
-                           parameterVector(parameters, spec.parameterCount(), "parameters")};
+             return Genome{spec, parameterVector(parameters, spec.parameterCount(), "parameters")};
            }),
-           py::arg("spec"), py::arg("parameters"))
+           py::arg("spec"), py::arg("parameters"),
+           "A genome of `spec` with `parameters` (spec.parameter_count finite numbers).")
       .def_readonly("spec", &Genome::spec, "The network the parameters are for.")
       .def_property_readonly(
           "parameters", [](const Genome& g) { return copyOf(g.parameters); },

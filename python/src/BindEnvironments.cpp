@@ -96,7 +96,7 @@ void bindEnvironments(py::module_& m) {
 
   py::class_<SpherusEnvironment>(m, "SpherusEnvCore",
                                  "The C++ core of thyrix.envs.SpherusEnv (use that).")
-      .def(py::init<const SpherusTask&>(), py::arg("task"))
+      .def(py::init<const SpherusTask&>(), py::arg("task"), "An environment of `task`.")
       .def(
           "reset",
           [](SpherusEnvironment& e, std::uint64_t seed) {
@@ -129,12 +129,13 @@ void bindEnvironments(py::module_& m) {
           },
           py::arg("action"), "One step; returns (observation, reward, terminated, truncated).")
       .def(
-          "render",
-          [](const SpherusEnvironment& e, int width) { return renderSvg(e, width); },
+          "render", [](const SpherusEnvironment& e, int width) { return renderSvg(e, width); },
           py::arg("width") = 600, "The arena as an SVG document, touch and vision drawn.")
       .def_property_readonly(
           "agent_centre",
-          [](const SpherusEnvironment& e) { return fromVector2(checkedWorld(e).spherus().centre()); },
+          [](const SpherusEnvironment& e) {
+            return fromVector2(checkedWorld(e).spherus().centre());
+          },
           "The agent's centre (x, y).")
       .def_property_readonly("step_index", &SpherusEnvironment::stepIndex,
                              "Steps taken in the episode.")
@@ -146,7 +147,8 @@ void bindEnvironments(py::module_& m) {
       .def(py::init([](std::size_t count, std::size_t threads, const SpherusTask& task) {
              return std::make_unique<SpherusVectorEnvironment>(count, threads, task);
            }),
-           py::arg("num_envs"), py::arg("threads"), py::arg("task"))
+           py::arg("num_envs"), py::arg("threads"), py::arg("task"),
+           "`num_envs` environments of `task` stepped on `threads` threads.")
       .def_property_readonly("num_envs", &SpherusVectorEnvironment::size, "Worlds.")
       .def_property_readonly("threads", &SpherusVectorEnvironment::threadCount,
                              "Threads stepping them, the caller's included.")

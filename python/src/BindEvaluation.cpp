@@ -19,8 +19,8 @@ void bindEvaluation(py::module_& m) {
         if (array.ndim() != 2 || array.shape(1) != dimension)
           throw py::value_error("genomes must have shape (P, " + std::to_string(dimension) +
                                 ") for the network " + std::to_string(task.network.layers.front()) +
-                                "-...-" + std::to_string(task.network.layers.back()) +
-                                ", not " + std::string(py::str(py::tuple(array.attr("shape")))));
+                                "-...-" + std::to_string(task.network.layers.back()) + ", not " +
+                                std::string(py::str(py::tuple(array.attr("shape")))));
         requireFinite({array.data(), static_cast<std::size_t>(array.size())}, "genomes");
         std::vector<std::vector<double>> population(static_cast<std::size_t>(array.shape(0)));
         for (std::size_t i = 0; i < population.size(); ++i) {
@@ -41,8 +41,8 @@ void bindEvaluation(py::module_& m) {
         std::copy(fitness.begin(), fitness.end(), result.mutable_data());
         return result;
       },
-      py::arg("task"), py::arg("genomes"), py::arg("trials"), py::arg("threads"),
-      py::arg("seed"), py::arg("generation"),
+      py::arg("task"), py::arg("genomes"), py::arg("trials"), py::arg("threads"), py::arg("seed"),
+      py::arg("generation"),
       "thyrix::evaluate() of `task` on each row of `genomes` (use thyrix.evaluate).");
 
   m.def("derive_seed", &deriveSeed, py::arg("run_seed"), py::arg("generation"),

@@ -66,7 +66,8 @@ void bindSensors(py::module_& m) {
           "A copy of the pixels' activations, each in [0, 1].")
       .def_property_readonly("pixel_count", &VisualSensor::pixelCount, "Pixels.")
       .def_property_readonly(
-          "field_of_view", [](const VisualSensor& eye) { return static_cast<double>(eye.fieldOfView()); },
+          "field_of_view",
+          [](const VisualSensor& eye) { return static_cast<double>(eye.fieldOfView()); },
           "Angle covered by the pixels, rad.");
 }
 

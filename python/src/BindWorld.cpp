@@ -158,8 +158,8 @@ void bindWorld(py::module_& m) {
           "radius", [](const Primitive& p) { return static_cast<double>(p.radius()); },
           "Radius of the circle, or of the capsule's caps, m.");
   py::class_<Circle, Primitive>(m, "Circle", "A circle (made by Simulator.add_circle).");
-  py::class_<CappedRectangle, Primitive>(
-      m, "CappedRectangle", "A capsule (made by Simulator.add_capped_rectangle).");
+  py::class_<CappedRectangle, Primitive>(m, "CappedRectangle",
+                                         "A capsule (made by Simulator.add_capped_rectangle).");
   py::class_<Border, PhysicalObject>(m, "Border",
                                      "A fixed half-plane (made by Simulator.add_border).")
       .def_property_readonly(
@@ -173,7 +173,8 @@ void bindWorld(py::module_& m) {
       .def(
           "advance_time",
           [](World& world, long steps) {
-            if (steps < 0) throw py::value_error("steps must be >= 0 (got " + std::to_string(steps) + ")");
+            if (steps < 0)
+              throw py::value_error("steps must be >= 0 (got " + std::to_string(steps) + ")");
             for (long i = 0; i < steps; ++i) world.advanceTime();
           },
           py::arg("steps") = 1, "Takes `steps` time steps.")
@@ -222,26 +223,28 @@ void bindWorld(py::module_& m) {
 
   py::class_<Simulator, World>(m, "Simulator",
                                "A world of bodies moved by F = m v, their contacts solved.")
-      .def(py::init<real>(), py::arg("timestep") = real(0.01))
+      .def(py::init<real>(), py::arg("timestep") = real(0.01),
+           "An empty world stepped `timestep` seconds at a time.")
       .def(
           "add_circle",
           [](Simulator& s, double radius, double mass, py::handle position, double angle,
              bool fixed) -> Circle& {
-            return addObject(s, std::make_unique<Circle>(static_cast<real>(radius), static_cast<real>(mass)),
-                             position, angle, fixed, "Circle");
+            return addObject(
+                s, std::make_unique<Circle>(static_cast<real>(radius), static_cast<real>(mass)),
+                position, angle, fixed, "Circle");
           },
           py::arg("radius"), py::arg("mass"), py::arg("position") = py::make_tuple(0, 0),
-          py::arg("angle") = 0.0, py::arg("fixed") = false, py::return_value_policy::reference_internal,
-          "Registers a new circle and returns it.")
+          py::arg("angle") = 0.0, py::arg("fixed") = false,
+          py::return_value_policy::reference_internal, "Registers a new circle and returns it.")
       .def(
           "add_capped_rectangle",
           [](Simulator& s, double length, double radius, double mass, py::handle position,
              double angle, bool fixed) -> CappedRectangle& {
-            return addObject(s,
-                             std::make_unique<CappedRectangle>(static_cast<real>(length),
-                                                               static_cast<real>(radius),
-                                                               static_cast<real>(mass)),
-                             position, angle, fixed, "CappedRectangle");
+            return addObject(
+                s,
+                std::make_unique<CappedRectangle>(
+                    static_cast<real>(length), static_cast<real>(radius), static_cast<real>(mass)),
+                position, angle, fixed, "CappedRectangle");
           },
           py::arg("length"), py::arg("radius"), py::arg("mass"),
           py::arg("position") = py::make_tuple(0, 0), py::arg("angle") = 0.0,
@@ -258,7 +261,8 @@ void bindWorld(py::module_& m) {
       .def_property("contact_solver", &Simulator::contactSolver, &Simulator::setContactSolver,
                     "The contact solver.")
       .def_property_readonly(
-          "solver_settings", [](Simulator& s) -> ContactSolverSettings& { return s.solverSettings(); },
+          "solver_settings",
+          [](Simulator& s) -> ContactSolverSettings& { return s.solverSettings(); },
           py::return_value_policy::reference_internal, "The solvers' tuning, to read and change.")
       .def_property(
           "gravity", [](const Simulator& s) { return fromVector2(s.gravity()); },

@@ -13,10 +13,9 @@ namespace thyrix::python {
 /// extending a class bound by an earlier one).
 template <class Function, class... Extra>
 void addMethod(pybind11::handle cls, const char* name, Function&& function, const Extra&... extra) {
-  pybind11::cpp_function method(std::forward<Function>(function), pybind11::name(name),
-                                pybind11::is_method(cls),
-                                pybind11::sibling(pybind11::getattr(cls, name, pybind11::none())),
-                                extra...);
+  pybind11::cpp_function method(
+      std::forward<Function>(function), pybind11::name(name), pybind11::is_method(cls),
+      pybind11::sibling(pybind11::getattr(cls, name, pybind11::none())), extra...);
   pybind11::setattr(cls, name, method);
 }
 

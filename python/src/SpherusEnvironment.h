@@ -13,9 +13,9 @@ namespace thyrix::python {
 
 /// What one step returns besides the observation.
 struct StepOutcome {
-  double reward = 0;       ///< the increase of the task's fitness over the step
-  bool terminated = false; ///< never: a Spherus episode has no terminal state
-  bool truncated = false;  ///< the episode has run its steps
+  double reward = 0;        ///< the increase of the task's fitness over the step
+  bool terminated = false;  ///< never: a Spherus episode has no terminal state
+  bool truncated = false;   ///< the episode has run its steps
 };
 
 /// One Spherus arena at a time, stepped by actions (the 5 effectors) given before each step.

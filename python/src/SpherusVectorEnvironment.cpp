@@ -41,8 +41,7 @@ void SpherusVectorEnvironment::resetNext(std::span<real> observations) {
 
 void SpherusVectorEnvironment::step(std::span<const real> actions, std::span<real> observations,
                                     std::span<double> rewards, std::span<bool> terminated,
-                                    std::span<bool> truncated,
-                                    std::span<real> finalObservations) {
+                                    std::span<bool> truncated, std::span<real> finalObservations) {
   pool_.forEach(environments_.size(), [&](std::size_t i) {
     SpherusEnvironment& environment = environments_[i];
     const std::span<real> observation = observations.subspan(i * observationSize, observationSize);

@@ -39,8 +39,8 @@ class SpherusVectorEnvironment {
   /// each) and, for each world whose episode ended, its last observation into row i of
   /// @p finalObservations (other rows untouched). Call without the GIL: nothing here touches
   /// Python.
-  void step(std::span<const real> actions, std::span<real> observations,
-            std::span<double> rewards, std::span<bool> terminated, std::span<bool> truncated,
+  void step(std::span<const real> actions, std::span<real> observations, std::span<double> rewards,
+            std::span<bool> terminated, std::span<bool> truncated,
             std::span<real> finalObservations);
 
   /// World i's environment.

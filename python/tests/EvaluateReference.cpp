@@ -21,8 +21,7 @@
 int main(int argc, char** argv) {
   using namespace thyrix;
   if (argc != 8) {
-    std::fprintf(stderr,
-                 "usage: %s TASK STEPS NETWORK TRIALS THREADS SEED GENERATION < genomes\n",
+    std::fprintf(stderr, "usage: %s TASK STEPS NETWORK TRIALS THREADS SEED GENERATION < genomes\n",
                  argv[0]);
     return 2;
   }

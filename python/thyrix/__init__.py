@@ -5,14 +5,12 @@ re-exported here. ``thyrix.envs`` has the Gymnasium-style environments, ``thyrix
 scores a population of neural-network genomes in parallel.
 """
 
-import os as _os
-
 import numpy as _np
 
 from ._thyrix import *  # noqa: F401,F403  (the bindings are the package's API)
-from ._thyrix import SpherusTask, evaluate_task, hardware_threads, real_dtype
+from ._thyrix import SpherusTask, evaluate_task, hardware_threads
 
-__all__ = [name for name in dir() if not name.startswith("_")]
+__all__ = [name for name in dir() if not name.startswith("_")] + ["evaluate"]
 
 
 def evaluate(genomes, task="distance", steps=1000, trials=1, threads=None, seed=1,
