@@ -89,7 +89,7 @@ def main():
     options = parser.parse_args()
     reference = options.reference or str(
         pathlib.Path(thyrix.__file__).resolve().parent.parent / "thyrix_evaluate_reference")
-    steps, repeats = (200, 3) if options.quick else (1000, 5)
+    steps, repeats = (200, 3) if options.quick else (1000, 10)
     print(f"{os.cpu_count()} hardware threads; real = {thyrix.real_dtype}")
     for threads in (1, 2):
         vector_env(64, threads, steps, repeats)
