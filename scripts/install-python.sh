@@ -13,4 +13,7 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DTHYRIX_BUILD_PYTHON=ON \
   -DTHYRIX_PYTHON_INSTALL_DIR="$site" >/dev/null
 cmake --build "$build" -j"$(nproc)" --target thyrix_python
 cmake --install "$build" --component python
-cd / && /usr/bin/python3 -c "import thyrix; print('thyrix installed in', thyrix.__path__[0])"
+# The check: from another folder, with the custom folder on PYTHONPATH if one was given.
+check_path=${PYTHONPATH:-}
+if [ -n "${THYRIX_PYTHON_INSTALL_DIR:-}" ]; then check_path="$site${check_path:+:$check_path}"; fi
+cd / && PYTHONPATH="$check_path" /usr/bin/python3 -c "import thyrix; print('thyrix installed in', thyrix.__path__[0])"
