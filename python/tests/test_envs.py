@@ -129,3 +129,14 @@ def test_gymnasium_checker_when_gymnasium_is_installed():
     check_env(SpherusEnv(seed=1, steps=50))
     env = gymnasium.make("thyrix/Spherus-v0", steps=10)
     env.reset(seed=1)
+
+
+def test_episode_k_is_laid_out_as_an_evaluation_episode_of_generation_k():
+    task = thyrix.SpherusTask("distance", 10, "ff")
+    env = SpherusEnv(steps=10)
+    env.reset(seed=31)
+    for episode in range(3):
+        world = task.make_world([0.0] * task.network.parameter_count,
+                                thyrix.derive_seed(31, episode, 0, 0))
+        assert env.agent_centre == world.spherus.centre
+        env.reset()
