@@ -445,10 +445,31 @@ void Simulator::indexContacts() {
   // world of core shapes indexes after it).
   for (std::uint32_t k = 0; k < contacts.size(); ++k) {
     const GlobalContactInfo& c = contacts.items_[k];
-    objectContacts_[objectContactCursor_[c.bodyA]++] =
-        ContactInfo{k, c.objectB, c.primitiveA, c.primitiveB, c.point, -c.normal, c.depth, c.force};
-    objectContacts_[objectContactCursor_[c.bodyB]++] =
-        ContactInfo{k, c.objectA, c.primitiveB, c.primitiveA, c.point, c.normal, c.depth, c.force};
+    // The point relative to each body's reference point, and the side: A is pushed against n.
+    objectContacts_[objectContactCursor_[c.bodyA]++] = ContactInfo{.index = k,
+                                                                   .other = c.objectB,
+                                                                   .primitive = c.primitiveA,
+                                                                   .otherPrimitive = c.primitiveB,
+                                                                   .p = c.point - c.objectA->r,
+                                                                   .point = c.point,
+                                                                   .n = c.normal,
+                                                                   .sigma = -1,
+                                                                   .normal = -c.normal,
+                                                                   .depth = c.depth,
+                                                                   .force = c.force,
+                                                                   .type = ContactType::Force};
+    objectContacts_[objectContactCursor_[c.bodyB]++] = ContactInfo{.index = k,
+                                                                   .other = c.objectA,
+                                                                   .primitive = c.primitiveB,
+                                                                   .otherPrimitive = c.primitiveA,
+                                                                   .p = c.point - c.objectB->r,
+                                                                   .point = c.point,
+                                                                   .n = c.normal,
+                                                                   .sigma = 1,
+                                                                   .normal = c.normal,
+                                                                   .depth = c.depth,
+                                                                   .force = c.force,
+                                                                   .type = ContactType::Force};
   }
   // (Each cursor ends at its slice's end: clearContactLists() zeroes it with the list.)
   // The counted objects are the listed ones now (and none is counted).

@@ -363,8 +363,49 @@ void ArticulatedAgentBase::refuseLinkForce(int b, Vector2 force, Vector2 worldPo
 // --- proprioception --------------------------------------------------------------------------
 
 LinkContactInfo ArticulatedAgentBase::linkContact(std::size_t k) const {
-  const ContactInfo& c = contacts[k];
-  return {bodyOf(*c.primitive), c.point, c.normal, c.depth, c.force, c.other, c.otherPrimitive};
+  LinkContactInfo info;
+  static_cast<ContactInfo&>(info) = contacts[k];
+  info.body = bodyOf(*info.primitive);
+  info.p = info.point - centerOfMass(info.body);
+  return info;
+}
+
+std::span<const LinkContactInfo> ArticulatedAgentBase::linkContacts(int b) {
+  if (b < base || b >= linkCount())
+    throw InvalidArgument(
+        "ArticulatedAgentBase.body",
+        "must be in [-1, " + std::to_string(linkCount()) + ") (got " + std::to_string(b) + ")");
+  linkContactList_.clear();
+  for (std::size_t k = 0; k < contacts.size(); ++k)
+    if (bodyOf(*contacts[k].primitive) == b) linkContactList_.push_back(linkContact(k));
+  // A limit's torque acts on its joint's link and, reversed, on the link's parent.
+  const auto primitiveOf = [this](int body) -> Primitive* {
+    return body == base ? baseParts_.front().get() : linkShapes_[index(body)].get();
+  };
+  for (const int joint : limitedJoints_) {
+    const real torque = limitTorques_[index(joint)];
+    const int parentBody = parent(joint);
+    if (torque == 0 || (b != joint && b != parentBody)) continue;
+    const ArticulatedLink& link = body_.links()[index(joint)];
+    const real q = jointAngle(joint);
+    LinkContactInfo info;
+    info.index = ContactInfo::noIndex;
+    info.other = this;
+    info.primitive = primitiveOf(b);
+    info.otherPrimitive = primitiveOf(b == joint ? parentBody : joint);
+    info.point = jointPosition(joint);
+    info.p = info.point - centerOfMass(b);
+    info.n = {0, 0};
+    info.normal = {0, 0};
+    // Positive torque: the lower limit holds the link; the parent feels the opposite.
+    info.sigma = (torque > 0) == (b == joint) ? real(1) : real(-1);
+    info.depth = torque > 0 ? link.qMin - q : q - link.qMax;
+    info.force = std::abs(torque);
+    info.type = ContactType::Torque;
+    info.body = b;
+    linkContactList_.push_back(info);
+  }
+  return linkContactList_;
 }
 
 real ArticulatedAgentBase::contactForceOn(int b) const {

@@ -75,7 +75,7 @@ struct ArticulatedBasePart {
 /// applyForce() works as for any body) and applyLinkForce().
 ///
 /// **Proprioception:** jointAngle(), jointRate(), the poses and velocities of every body, the
-/// last limit torques, and each contact's body (linkContact()).
+/// last limit torques, and each body's contact list, joint limits included (linkContacts()).
 ///
 /// **Contacts.** Every shape collides with other objects. Two of the agent's own bodies collide
 /// unless they are neighbours (selfCollides()). The base's parts never collide with each other.
@@ -223,8 +223,16 @@ class ArticulatedAgentBase : public MultiBodyObject {
   /// multiplier, never negative.
   [[nodiscard]] real limitTorque(int i) const { return limitTorques_[index(i)]; }
 
-  /// Contact @p k of this step's `contacts`, with the body it touches.
+  /// Contact @p k of this step's `contacts`, with the body it touches, its `p` relative to that
+  /// body's centre of mass.
   [[nodiscard]] LinkContactInfo linkContact(std::size_t k) const;
+  /// Body @p b's contact list of this step (-1 the base, else a link), as the original users'
+  /// guide describes it: its force contacts (linkContact(), in the order of `contacts`), then
+  /// a torque contact for each joint at its limit between @p b and its parent or a child
+  /// (limitTorque() not zero; LinkContactInfo). The view is valid until the next call of
+  /// linkContacts() or the next step; a list no longer than any before it allocates nothing.
+  /// @throws InvalidArgument naming "ArticulatedAgentBase.body" unless a body of this agent
+  [[nodiscard]] std::span<const LinkContactInfo> linkContacts(int b);
   /// The sum of the magnitudes of this step's contact forces on body @p b (N).
   [[nodiscard]] real contactForceOn(int b) const;
 
@@ -309,6 +317,7 @@ class ArticulatedAgentBase : public MultiBodyObject {
   bool servosChanged_ = false;      ///< a servo was set or cleared since the last step
   std::vector<real> servoTorques_;  ///< the servo torques of the last step (N m)
   std::vector<real> limitTorques_;  ///< the limit torques of the last step (N m)
+  std::vector<LinkContactInfo> linkContactList_;  ///< linkContacts()' list, reused
   /// The wrenches of applyLinkForce() per body, base first (body b at b + 1), about each centre
   /// of mass: `(torque, fx, fy)`. The links' lack the weight while applyWeight() keeps it
   /// (linkWeightKept_): code that reads or writes a link's wrench here other than through

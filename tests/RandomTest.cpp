@@ -1,8 +1,6 @@
-// Tests of the seeded random stream (Tools/MTRandom.h, Tools/Random.h) and of
-// Tools/PurgeContainer.h.
+// Tests of the seeded random stream (Tools/MTRandom.h, Tools/Random.h).
 
 #include <Tools/MTRandom.h>
-#include <Tools/PurgeContainer.h>
 #include <Tools/Random.h>
 #include <gtest/gtest.h>
 
@@ -236,9 +234,6 @@ TEST(RandomTest, Bernoulli) {
   EXPECT_NEAR(hits, 30000, 1500);
 }
 
-// ---------------------------------------------------------------------------------------------
-// purgeContainer
-
 // Marsaglia's polar method written out independently, on the uniform draws of @p stream, with
 // the C library's log: MTRandom::normal() must give these numbers.
 class PolarReference {
@@ -458,47 +453,6 @@ TEST(MTRandomStateTest, ReadRefusesCorruptStates) {
   refused(text.substr(0, spare) + "spare 1 1.5x\n", "the spare '1.5x'");
   std::istringstream in(text);
   EXPECT_EQ(MTRandom::State::read(in), random.saveState());
-}
-
-TEST(PurgeContainerTest, EmptiesAndReleasesCapacity) {
-  std::vector<int> values(1000, 7);
-  values.reserve(5000);
-  ASSERT_GE(values.capacity(), 5000u);
-  purgeContainer(values);
-  EXPECT_TRUE(values.empty());
-  EXPECT_EQ(values.capacity(), 0u);
-  // Still usable afterwards.
-  values.push_back(3);
-  EXPECT_EQ(values.size(), 1u);
-  EXPECT_EQ(values[0], 3);
-}
-
-TEST(PurgeContainerTest, DestroysEveryElement) {
-  struct Counted {
-    explicit Counted(int* live) : live_(live) { ++*live_; }
-    Counted(const Counted& o) : live_(o.live_) { ++*live_; }
-    Counted& operator=(const Counted&) = delete;
-    ~Counted() { --*live_; }
-    int* live_;
-  };
-  int live = 0;
-  {
-    std::vector<Counted> items;
-    items.reserve(10);
-    for (int i = 0; i < 10; ++i) items.emplace_back(&live);
-    EXPECT_EQ(live, 10);
-    purgeContainer(items);
-    EXPECT_EQ(live, 0);
-    EXPECT_EQ(items.capacity(), 0u);
-  }
-  EXPECT_EQ(live, 0);
-}
-
-TEST(PurgeContainerTest, EmptyContainerStaysEmpty) {
-  std::vector<double> values;
-  purgeContainer(values);
-  EXPECT_TRUE(values.empty());
-  EXPECT_EQ(values.capacity(), 0u);
 }
 
 }  // namespace
