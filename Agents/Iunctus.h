@@ -52,7 +52,11 @@ class Iunctus : public ArticulatedAgentQuasistatic {
   using Parameters = IunctusParameters;    ///< the agent's sizes and strengths
   static constexpr int effectorCount = 7;  ///< number of effectors
   static constexpr int sensorCount = 30;   ///< number of sensors
-  static constexpr int jointCount = 3;     ///< links (and joints) of the limb
+  /// The original spellings of sensorCount and effectorCount: any use fails to compile,
+  /// naming them (ThyrixLite/Renamed.h).
+  static renamed::nSensors_is_now_sensorCount nSensors;
+  static renamed::nEffectors_is_now_effectorCount nEffectors;  ///< see nSensors
+  static constexpr int jointCount = 3;                         ///< links (and joints) of the limb
   // Effector and sensor indices, as documented above.
   static constexpr int forward = 0;          ///< effector: forward force
   static constexpr int backward = 1;         ///< effector: backward force

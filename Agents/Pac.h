@@ -115,6 +115,10 @@ class Pac : public Elastoid {
 
   /// Number of sensors, `11 + circleCount`.
   [[nodiscard]] int sensorCount() const { return static_cast<int>(sensors_.size()); }
+  /// The original spellings of sensorCount and effectorCount: any use fails to compile,
+  /// naming them (ThyrixLite/Renamed.h).
+  static renamed::nSensors_is_now_sensorCount nSensors;
+  static renamed::nEffectors_is_now_effectorCount nEffectors;  ///< see nSensors
   /// The sensor activations of the last step.
   [[nodiscard]] std::span<const real> sensors() const { return sensors_; }
   /// The effector activations, written by the controller each step (or by hand without one).

@@ -38,10 +38,14 @@ struct SpherusParameters {
 ///   then 34: the link length as a fraction of maxLinkLength.
 class Spherus : public Elastoid {
  public:
-  using Parameters = SpherusParameters;        ///< the agent's sizes and strengths
-  static constexpr int effectorCount = 5;      ///< number of effectors
-  static constexpr int sensorCount = 35;       ///< number of sensors
-  static constexpr int sensorsPerCircle = 17;  ///< contact 8, visual 7, velocity 2
+  using Parameters = SpherusParameters;    ///< the agent's sizes and strengths
+  static constexpr int effectorCount = 5;  ///< number of effectors
+  static constexpr int sensorCount = 35;   ///< number of sensors
+  /// The original spellings of sensorCount and effectorCount: any use fails to compile,
+  /// naming them (ThyrixLite/Renamed.h).
+  static renamed::nSensors_is_now_sensorCount nSensors;
+  static renamed::nEffectors_is_now_effectorCount nEffectors;  ///< see nSensors
+  static constexpr int sensorsPerCircle = 17;                  ///< contact 8, visual 7, velocity 2
 
   /// A Spherus driven by @p controller (it may be null: the effectors then stay as set by
   /// effectors(), e.g. by a program driving it directly).

@@ -5,8 +5,9 @@
 /// For contact k between bodies a and b with unit normal n (a to b) at point p, the row of
 /// the Jacobian is `J_k = [-n, -ka | n, kb]` with `ka = (p - c_a) x n`, `kb = (p - c_b) x n`.
 /// The solvers find forces f >= 0 with `w = J u >= c` and `f (w - c) = 0`, where
-/// `u = u0 + D^-1 J^T f` and `D = diag(m, m, I)` per body (DESIGN.md section 4).
+/// `u = u0 + D^-1 J^T f` and `D = diag(m, m, I)` per body (docs/Design.md section 4).
 
+#include <ThyrixLite/Renamed.h>
 #include <ThyrixLite/ThyrixParameters.h>
 #include <ThyrixLite/Vector2.h>
 
@@ -51,12 +52,17 @@ struct ContactSolverSettings {
   bool warmStart = true;
   /// Over-relaxation factor of Gauss-Seidel, in (0, 2); 1 is plain Gauss-Seidel.
   real relaxation = 1;
-  /// Islands with more contacts than this are solved by Gauss-Seidel even when Baraff is chosen.
-  /// Baraff's method works on a dense matrix of the island's contacts and pivots once or more
-  /// per contact, so its cost grows with the cube of the contacts (measured on settled piles:
-  /// 4x Gauss-Seidel's 20 sweeps at 22 contacts, 40x at 92): the exact solve is for the small
-  /// islands agents make, piles go to Gauss-Seidel.
-  int baraffMaxContacts = 32;
+  /// Islands of rigid bodies with more contacts than this are solved by Gauss-Seidel even when
+  /// Baraff is chosen, and counted in StepStatistics::baraffOversizedIslands. Baraff's method
+  /// works on a dense matrix of the island's contacts and pivots once or more per contact, so
+  /// its cost grows with the cube of the contacts (measured on settled piles: 4x Gauss-Seidel's
+  /// 20 sweeps at 22 contacts, 40x at 92): the exact solve is for the small islands agents
+  /// make, piles go to Gauss-Seidel. `std::numeric_limits<int>::max()` asks for exact solves
+  /// everywhere. (Islands with an articulated agent are solved by the chosen method whatever
+  /// their size.)
+  int baraffMaxIslandContacts = 32;
+  /// The original name of baraffMaxIslandContacts: any use fails to compile, naming it.
+  static renamed::baraffMaxContacts_is_now_baraffMaxIslandContacts baraffMaxContacts;
   /// Fraction of an overlap corrected per step (the elastic push apart), in (0, 1]. At 1 an
   /// overlap's target asks for the whole overlap to go in one step, as a gap's target allows the
   /// whole gap to close: the constraint is then "no overlap at the end of the step". A solver

@@ -4,7 +4,13 @@
 
 namespace thyrix {
 
+// Defined only here, for the one definition of controll(): elsewhere the type stays incomplete,
+// so a call of controll() cannot compile.
+struct renamed::controll_is_now_control {};
+
 void PhysicalObject::control() {}
+
+renamed::controll_is_now_control PhysicalObject::controll() { return {}; }
 
 void PhysicalObject::updateSensors(const World& /*world*/) {}
 

@@ -4,6 +4,7 @@
 
 #include <ThyrixLite/ContactInfo.h>
 #include <ThyrixLite/GraphicalObject.h>
+#include <ThyrixLite/Renamed.h>
 #include <ThyrixLite/ThyrixParameters.h>
 #include <ThyrixLite/Vector2.h>
 #include <Tools/Inlining.h>
@@ -114,6 +115,9 @@ class PhysicalObject : public GraphicalObject {
   /// Phase 7 of a step: sensors to controller to motor forces for the next step.
   /// The default does nothing (a passive object).
   virtual void control();
+  /// The original spelling of control(): overriding or calling it fails to compile, naming
+  /// control() (ThyrixLite/Renamed.h).
+  virtual renamed::controll_is_now_control controll() final;
 
   /// Phase 8 of a step: moves the body by its velocity for @p dt (explicit Euler).
   virtual void integrate(real dt) {

@@ -143,7 +143,7 @@ void Simulator::reserveContacts(std::size_t count) {
   rows_.reserve(count);
   islands_.reserve(objects.size(), count);
   baraff_.reserve(
-      std::min(count, static_cast<std::size_t>(std::max(settings_.baraffMaxContacts, 0))));
+      std::min(count, static_cast<std::size_t>(std::max(settings_.baraffMaxIslandContacts, 0))));
   gaussSeidel_.reserve(objects.size(), count);
   if (hasMultiBodies_) {  // general islands: their matrix and the objects' sides
     const std::size_t island = std::min(count, std::size_t{256});

@@ -32,7 +32,12 @@ struct StepStatistics {
   std::size_t solvedIslands = 0;      ///< islands whose contacts needed forces
   std::size_t gaussSeidelSweeps = 0;  ///< sweeps summed over the islands Gauss-Seidel solved
   std::size_t baraffPivots = 0;       ///< pivots summed over the islands Baraff solved
-  std::size_t baraffFallbacks = 0;    ///< islands Baraff gave to Gauss-Seidel
+  /// Islands Baraff was given and could not finish (a singular clamped block, contradictory
+  /// targets, too many pivots): Gauss-Seidel solved them.
+  std::size_t baraffFallbacks = 0;
+  /// Islands of rigid bodies with more than ContactSolverSettings::baraffMaxIslandContacts
+  /// contacts: Gauss-Seidel solved them although Baraff was chosen (0 with Gauss-Seidel chosen).
+  std::size_t baraffOversizedIslands = 0;
   /// Detections run again because the solve moved a shape past a border that detection had
   /// not reached (Simulator::advanceTime()); 0 in almost every step.
   std::size_t redetections = 0;

@@ -29,6 +29,7 @@ void Simulator::solveContacts() {
 bool Simulator::solveOnce(bool mayRedetect) {
   statistics_.islands = statistics_.solvedIslands = 0;
   statistics_.gaussSeidelSweeps = statistics_.baraffPivots = statistics_.baraffFallbacks = 0;
+  statistics_.baraffOversizedIslands = 0;
   const real dt = timestep();
   internal_.clear();
   internalOwner_.clear();
@@ -332,12 +333,15 @@ void Simulator::updateTactileSensors() {
 
 void Simulator::solveIsland(std::span<const std::uint32_t> island) {
   ++statistics_.solvedIslands;
-  if (solverKind_ == ContactSolverKind::Baraff &&
-      island.size() <= static_cast<std::size_t>(settings_.baraffMaxContacts)) {
-    const bool solved = baraff_.solve(island, rows_, bodies_);
-    statistics_.baraffPivots += static_cast<std::size_t>(baraff_.lastPivotCount());
-    if (solved) return;
-    ++statistics_.baraffFallbacks;
+  if (solverKind_ == ContactSolverKind::Baraff) {
+    if (island.size() <= static_cast<std::size_t>(settings_.baraffMaxIslandContacts)) {
+      const bool solved = baraff_.solve(island, rows_, bodies_);
+      statistics_.baraffPivots += static_cast<std::size_t>(baraff_.lastPivotCount());
+      if (solved) return;
+      ++statistics_.baraffFallbacks;
+    } else {
+      ++statistics_.baraffOversizedIslands;  // Gauss-Seidel by choice: counted, so it shows
+    }
   }
   // The rows hold the warm start's forces (solveContacts()), or 0: Gauss-Seidel adds their
   // velocities as it copies the island.
