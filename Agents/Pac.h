@@ -1,7 +1,7 @@
 #pragma once
 /// @file Pac.h
 /// @brief Pac: a ring of circles joined by elastic links, with a mouth through which it eats
-/// objects and carries them inside its body (users' guide, section 8).
+/// objects and carries them inside its body (docs/Agents.md, "The example: Pac").
 
 #include <Controller/Controller.h>
 #include <ThyrixLite/Circle.h>

@@ -1,6 +1,7 @@
 #pragma once
 /// @file Spherus.h
-/// @brief Spherus: two circles joined by a variable-length virtual link (users' guide, section 8).
+/// @brief Spherus: two circles joined by a variable-length virtual link (docs/Agents.md, "The
+/// example: Spherus").
 
 #include <Controller/Controller.h>
 #include <ThyrixLite/Circle.h>

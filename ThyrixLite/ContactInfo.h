@@ -19,7 +19,8 @@ enum class ContactType : std::uint8_t {
 };
 
 /// A contact of this object, in its `contacts` list, with the fields of the original users'
-/// guide (`p` relative to the object, `n`, `sigma`, the type) and their world-frame forms.
+/// guide (`p` relative to the object, `n`, `sigma`, the type; docs/PortingFromThyrix.md) and
+/// their world-frame forms.
 /// Written by Simulator::indexContacts; `force` is filled in once the contact solver has run
 /// in the same step.
 ///

@@ -14,7 +14,7 @@ namespace thyrix {
 /// An object made of sub-bodies that move relative to each other, such as ThyrixPro's
 /// articulated agents. The simulator cannot treat it as one rigid body: for its contacts it asks
 /// the object itself, through unit constraint forces, for velocities and responses (Kokkevis,
-/// "Practical Physics for Articulated Characters", 2004; ALGORITHMS.md section 3).
+/// "Practical Physics for Articulated Characters", 2004; docs/Algorithms.md section 3).
 ///
 /// Its primitives are attached with `Primitive::attachTo(*this, ..., /*rigid=*/false)`: the
 /// object places them itself (in integrate() and when registered) instead of following a

@@ -28,8 +28,8 @@ class World;
 /// force on it divided by its mass, `v = F / m` and `omega = torque / I`, so it stops the
 /// instant nothing pushes it.
 ///
-/// The fields are public, as in the users' guide: set `r` and `alpha` before or after
-/// registering the object with a Simulator; add to `externalForce` and `externalTorque`
+/// The fields are public, as in the users' guide (docs/UsersGuide.md): set `r` and `alpha` before
+/// or after registering the object with a Simulator; add to `externalForce` and `externalTorque`
 /// (typically in control()) to push it during the next step. A body collides through its
 /// primitives(): a Circle or CappedRectangle is its own single primitive.
 ///

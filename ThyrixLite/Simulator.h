@@ -45,7 +45,7 @@ struct StepStatistics {
 
 /// A World that advances in time with quasistatic dynamics.
 ///
-/// One call of advanceTime() runs, in order (DESIGN.md section 3):
+/// One call of advanceTime() runs, in order (docs/Design.md section 3):
 /// 1. erase the last step's contacts; 2. detectContacts(); 3. indexContacts();
 /// 4. applyMouseForce(); 5. computeDerivativesWithoutContacts() (each object's, in the gravity
 /// field);

@@ -9,9 +9,9 @@
 
 namespace thyrix {
 
-/// The tactile sensors of one primitive (users' guide, figure 5). Each sensor covers a sector
-/// of the outline; its activation is `min(1, sum of the contact-force magnitudes in the sector
-/// / saturation)`, refreshed every step once the contact forces are known.
+/// The tactile sensors of one primitive (docs/Agents.md, "Touch: tactile sensors"). Each sensor
+/// covers a sector of the outline; its activation is `min(1, sum of the contact-force magnitudes in
+/// the sector / saturation)`, refreshed every step once the contact forces are known.
 ///
 /// Layouts, in the primitive's own frame:
 /// - circle: `count` sectors of `2 pi / count`, sensor k covering the angles

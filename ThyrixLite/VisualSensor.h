@@ -16,7 +16,7 @@
 
 namespace thyrix {
 
-/// A visual sensor (DESIGN.md section 4): an eye at a point of a body, looking along a
+/// A visual sensor (docs/Design.md section 4): an eye at a point of a body, looking along a
 /// direction fixed in the body, with `pixelCount` pixels of `pixelAngle` radians side by side,
 /// centred on the view direction. With `d` the world view direction, `n` pixels of width `w`,
 /// pixel i sees the directions `[d - n w / 2 + i w, d - n w / 2 + (i + 1) w]`: pixel 0 is the

@@ -227,10 +227,11 @@ class ArticulatedAgentBase : public MultiBodyObject {
   /// body's centre of mass.
   [[nodiscard]] LinkContactInfo linkContact(std::size_t k) const;
   /// Body @p b's contact list of this step (-1 the base, else a link), as the original users'
-  /// guide describes it: its force contacts (linkContact(), in the order of `contacts`), then
-  /// a torque contact for each joint at its limit between @p b and its parent or a child
-  /// (limitTorque() not zero; LinkContactInfo). The view is valid until the next call of
-  /// linkContacts() or the next step; a list no longer than any before it allocates nothing.
+  /// guide describes it (docs/PortingFromThyrix.md): its force contacts (linkContact(), in the
+  /// order of `contacts`), then a torque contact for each joint at its limit between @p b and its
+  /// parent or a child (limitTorque() not zero; LinkContactInfo). The view is valid until the next
+  /// call of linkContacts() or the next step; a list no longer than any before it allocates
+  /// nothing.
   /// @throws InvalidArgument naming "ArticulatedAgentBase.body" unless a body of this agent
   [[nodiscard]] std::span<const LinkContactInfo> linkContacts(int b);
   /// The sum of the magnitudes of this step's contact forces on body @p b (N).

@@ -29,7 +29,7 @@ void ArticulatedAgentQuasistatic::computeDerivativesWithoutContacts() {
   // The servo tau = k (q* - q - dt qdot) with the step's final qdot, solved implicitly: the
   // damping c = k dt joins d_i in the articulated-body algorithm (ArticulatedBody), and
   // k (q* - q) is an ordinary torque. The joint's equation becomes (d + k dt) qdot = k (q* - q)
-  // + ..., which cannot overshoot, whatever k (ALGORITHMS.md section 2, pitfalls). The damping
+  // + ..., which cannot overshoot, whatever k (docs/Algorithms.md section 2, pitfalls). The damping
   // is constant between changes of the servos (or of the time step): it is set only then, and
   // only where it differs, since a change costs the body a new inertia pass.
   const real dt = timestep();

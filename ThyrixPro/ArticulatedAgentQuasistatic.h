@@ -15,8 +15,8 @@
 namespace thyrix {
 
 /// An articulated agent moving by the quasistatic law `(J^T D J) u = J^T F + tau`
-/// (ArticulatedBody; DESIGN.md section 4): a base of circles and capsules with limbs of capsule
-/// links on revolute joints, registered with a Simulator like any object.
+/// (ArticulatedBody; docs/Design.md section 4): a base of circles and capsules with limbs of
+/// capsule links on revolute joints, registered with a Simulator like any object.
 ///
 /// Build it from ArticulatedBasePart and ArticulatedLimb descriptions, place it (`r`, `alpha`
 /// or setPose()), register it, and drive it from control() (override it in a subclass) or
@@ -27,7 +27,7 @@ namespace thyrix {
 ///   applyLinkForce(), in O(N); the accumulators are reset;
 /// - phase 6, in the simulator's contact solve: collectInternalConstraints() adds the joint
 ///   limits, velocityAlong() and responseMatrix() give the LCP's `b` and `K` block through
-///   test forces (Kokkevis 2004; ALGORITHMS.md section 3), O(N) per constraint, and
+///   test forces (Kokkevis 2004; docs/Algorithms.md section 3), O(N) per constraint, and
 ///   applyConstraintForces() sets the final velocities;
 /// - phase 8, integrate(): explicit Euler on the base pose and joint angles, then the shapes
 ///   are placed.

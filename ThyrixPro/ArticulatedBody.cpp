@@ -10,7 +10,7 @@
 #include <type_traits>
 #include <utility>
 
-// The quasistatic articulated-body algorithm (Featherstone 2008, chapter 7; ALGORITHMS.md
+// The quasistatic articulated-body algorithm (Featherstone 2008, chapter 7; docs/Algorithms.md
 // section 2) with every body's spatial quantities expressed about its frame origin (the base's
 // centre of mass, or the link's joint) in *world-aligned* axes. The algorithm holds in any
 // coordinates as long as each quantity is expressed consistently (Featherstone 2008 uses body
@@ -20,7 +20,7 @@
 //
 // With velocities in place of accelerations and no velocity-product terms, the equation of
 // motion of body i is f_i = D_i v_i - f_ext,i, where f_i is the force its parent transmits
-// through joint i (ALGORITHMS.md section 2). The articulated-body equation
+// through joint i (docs/Algorithms.md section 2). The articulated-body equation
 // f_i = D^A_i v_i + p^A_i (Featherstone 2008, chapter 7, with v for a and no velocity-product
 // terms) is built leaves to root, and then the joint rates follow root to leaves.
 

@@ -25,7 +25,7 @@ namespace thyrix {
 
 /// A rigid base (mass m0, moment of inertia I0 about its centre of mass, pose x, y, theta) and
 /// a tree of ArticulatedLink on revolute joints, moving by the quasistatic law `D u = F`
-/// (DESIGN.md section 4): velocities, not accelerations, are proportional to forces.
+/// (docs/Design.md section 4): velocities, not accelerations, are proportional to forces.
 ///
 /// **Bodies** are numbered like ArticulatedLink::parent: `-1` (ArticulatedLink::base) is the
 /// base and `0 .. linkCount() - 1` are the links. Arrays over all bodies hold the base first:
@@ -53,7 +53,7 @@ namespace thyrix {
 /// C = diag(0, 0, 0, c) the joint damping (setJointDamping(), zero by default). solve() computes
 /// u in O(N) by the articulated-body algorithm with velocities in place of accelerations and no
 /// velocity-product terms (Featherstone 2008, chapter 7: section 7.3 and Table 7.1, p. 132;
-/// ALGORITHMS.md section 2).
+/// docs/Algorithms.md section 2).
 ///
 /// **Joint damping.** A joint torque `-c_i qdot_i` opposing the joint's own rate enters the
 /// joint equation as `(d_i + c_i) qdot_i = u_i - U_i^T X_i v_parent`, so it is solved implicitly in
@@ -65,7 +65,7 @@ namespace thyrix {
 /// from torques and external wrenches. A contact solver then builds its constraint matrix K a
 /// column at a time with respond() (one TestForce per constraint) and velocityAlong(): the
 /// articulated inertias depend on the configuration only, so they are computed once and every
-/// test force costs one bias pass and one outward pass (Kokkevis 2004; ALGORITHMS.md section
+/// test force costs one bias pass and one outward pass (Kokkevis 2004; docs/Algorithms.md section
 /// 3). Move the state with integrate().
 ///
 /// All work arrays are sized at construction: solve(), respond() and the kinematics allocate

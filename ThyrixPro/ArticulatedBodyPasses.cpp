@@ -287,7 +287,7 @@ void ArticulatedBody::inwardPass(const Wrenches& wrenches, const real* torques) 
   // slot holds only what its other children have passed (and, in bias_, respond()'s test
   // forces), and is read only if it can hold something (gathers_): a chain's links touch no
   // slot. A body's own terms are added when it is visited: its inertia about its frame origin
-  // (ALGORITHMS.md section 2), and p^A_i starts as -f_ext,i about the frame origin (Table 7.1
+  // (docs/Algorithms.md section 2), and p^A_i starts as -f_ext,i about the frame origin (Table 7.1
   // without the v x* I v term), the wrench being given about the centre of mass: it is
   // subtracted from the children's terms when the slot is empty, which gives the same bits as
   // adding its negation. Only the base's articulated inertia is needed afterwards: the links'

@@ -2,7 +2,7 @@
 /// @file SpatialAlgebra.h
 /// @brief Planar spatial vector algebra (Featherstone 2008, chapter 2, planar vectors): motion
 /// and force 3-vectors, the planar coordinate transform X and its dual, and the planar spatial
-/// inertia with the quasistatic coefficients of ALGORITHMS.md section 2.
+/// inertia with the quasistatic coefficients of docs/Algorithms.md section 2.
 ///
 /// **Order of the components.** A planar spatial vector is a thyrix::Vector3 ordered
 /// *(angular, linear x, linear y)*, as in Featherstone's planar vectors:
@@ -44,8 +44,8 @@ constexpr Vector3 spatialForceAt(Vector2 force, Vector2 point, Vector2 origin) {
 
 /// A planar spatial inertia about a frame origin (Featherstone 2008, chapter 2: the rigid-body
 /// inertia `I_O = [I_c + m c x c x^T, m c x; m c x^T, m 1]` specialised to the plane), here with
-/// the quasistatic coefficients of `D` (ALGORITHMS.md section 2): the mass @p m (N s/m) and the
-/// moment of inertia @p inertiaAboutCenter (N m s) about the centre of mass, which lies at
+/// the quasistatic coefficients of `D` (docs/Algorithms.md section 2): the mass @p m (N s/m) and
+/// the moment of inertia @p inertiaAboutCenter (N m s) about the centre of mass, which lies at
 /// @p center from the origin, in the frame's axes:
 ///
 ///     [ I + m |c|^2   -m c_y   m c_x ]

@@ -8,7 +8,7 @@ namespace thyrix {
 
 /// Deletes the objects of @p container, empties it and releases its capacity, as the
 /// original users' guide describes it ("by deleting these objects, and emptying the
-/// container").
+/// container"; docs/PortingFromThyrix.md).
 ///
 /// - A container of raw pointers (`std::vector<Circle*>`, `std::list<Agent*>`, ...) owns
 ///   what they point to: each is deleted with `delete` (null pointers are skipped), then the

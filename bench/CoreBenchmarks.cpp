@@ -10,6 +10,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -48,6 +49,23 @@ void BM_PileStepGaussSeidel(benchmark::State& state) {
 void BM_PileStepBaraff(benchmark::State& state) { pileStep(state, ContactSolverKind::Baraff); }
 BENCHMARK(BM_PileStepGaussSeidel)->Arg(1000)->Arg(4000)->Arg(16000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PileStepBaraff)->Arg(1000)->Arg(4000)->Arg(16000)->Unit(benchmark::kMillisecond);
+
+/// A settled pile (settled as BM_PileStepBaraff's) then stepped with Baraff asked to solve
+/// every island exactly (no size limit): what exact solves everywhere cost (docs/UsersGuide.md,
+/// "Choosing a contact solver"). 100 bodies only: a pile of 1000 takes seconds a step.
+void BM_PileStepBaraffExact(benchmark::State& state) {
+  SettledPile pile(static_cast<int>(state.range(0)), ContactSolverKind::Baraff);
+  pile.simulator.solverSettings().baraffMaxIslandContacts = std::numeric_limits<int>::max();
+  std::size_t failed = 0;
+  for (auto _ : state) {
+    pile.advance();
+    failed += pile.simulator.statistics().baraffFallbacks;
+  }
+  state.counters["contacts"] = static_cast<double>(pile.simulator.contacts.size());
+  state.counters["baraff_failed"] =
+      benchmark::Counter(static_cast<double>(failed), benchmark::Counter::kAvgIterations);
+}
+BENCHMARK(BM_PileStepBaraffExact)->Arg(100)->Unit(benchmark::kMillisecond);
 
 /// Contact detection alone on a settled pile, run again and again on the same state. With
 /// @p restSkipping off every shape is placed and every pair tested, as in a pile that moves;

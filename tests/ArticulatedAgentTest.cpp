@@ -628,7 +628,7 @@ TEST(ArticulatedAgentRules, ComposedBodiesInARowTouchTheirNeighboursNotThemselve
 }
 
 TEST(ArticulatedAgentRules, AFiltersStampFollowsItsOwnChangesOnly) {
-  // DESIGN.md: no global mutable state. A filter's stamp counts its own changes, whatever
+  // docs/Design.md: no global mutable state. A filter's stamp counts its own changes, whatever
   // other filters do (an agent built here sets its own), and grows at every change, copies
   // assigned included, so that a simulator that kept it sees every change.
   const auto arm = makeArm(3);  // its filter's rules, assigned before this filter's

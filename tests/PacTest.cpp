@@ -1,4 +1,4 @@
-// Pac: its sensor and effector layout, its shape, and eating as the users' guide describes it.
+// Pac: its sensor and effector layout, its shape, and eating as docs/Agents.md describes it.
 // This executable links support/AllocationCounter.cpp to count allocations (as AllocationTest
 // does); the count is read around the steps under test only.
 

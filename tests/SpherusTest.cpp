@@ -1,4 +1,4 @@
-// Spherus: its sensor and effector layout, and the behaviours the users' guide describes.
+// Spherus: its sensor and effector layout, and the behaviours docs/Agents.md describes.
 
 #include "TestTolerances.h"
 

@@ -1,5 +1,5 @@
 // Bad input is refused with an InvalidArgument naming the field, and the world is left as it
-// was (DESIGN.md section 6).
+// was (docs/Design.md section 6).
 
 #include <ThyrixLite/Border.h>
 #include <ThyrixLite/CappedRectangle.h>
