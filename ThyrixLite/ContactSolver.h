@@ -61,7 +61,7 @@ struct ContactSolverSettings {
   /// everywhere. (Islands with an articulated agent are solved by the chosen method whatever
   /// their size.)
   int baraffMaxIslandContacts = 32;
-  /// The original name of baraffMaxIslandContacts: any use fails to compile, naming it.
+  /// The former name of baraffMaxIslandContacts: any use fails to compile, naming it.
   static renamed::baraffMaxContacts_is_now_baraffMaxIslandContacts baraffMaxContacts;
   /// Fraction of an overlap corrected per step (the elastic push apart), in (0, 1]. At 1 an
   /// overlap's target asks for the whole overlap to go in one step, as a gap's target allows the

@@ -1,7 +1,7 @@
 #pragma once
 /// @file Renamed.h
-/// @brief Names of the original Thyrix that are spelled differently here: code that uses them
-/// fails to compile with an error that names the new spelling.
+/// @brief Names of the original Thyrix that are spelled differently here (and former names of
+/// this one): code that uses them fails to compile with an error that names the new spelling.
 ///
 /// Each old name is declared where the original had it, with one of these types, which are
 /// declared and never defined (`<old>_is_now_<new>`). Overriding an old virtual function
