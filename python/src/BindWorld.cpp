@@ -92,8 +92,8 @@ void bindWorld(py::module_& m) {
                      "Start from the last step's forces.")
       .def_readwrite("relaxation", &ContactSolverSettings::relaxation,
                      "Gauss-Seidel's relaxation factor.")
-      .def_readwrite("baraff_max_contacts", &ContactSolverSettings::baraffMaxContacts,
-                     "Islands with more contacts go to Gauss-Seidel.")
+      .def_readwrite("baraff_max_island_contacts", &ContactSolverSettings::baraffMaxIslandContacts,
+                     "Islands with more contacts go to Gauss-Seidel, counted as oversized.")
       .def_readwrite("penetration_correction", &ContactSolverSettings::penetrationCorrection,
                      "Fraction of an overlap corrected in a step.")
       .def_readwrite("speculative_fraction", &ContactSolverSettings::speculativeFraction,
