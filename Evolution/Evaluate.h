@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <ranges>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,43 @@ struct EvaluationOptions {
   std::uint64_t generation = 0;  ///< the generation, for the episodes' seeds
 };
 
+/// Runs episodes `first` to `first + episodes.size() - 1` of evaluate() on @p pool, writing
+/// the fitness of episode `first + k` to `episodes[k]` (episode `i * options.trials + t` is trial
+/// t of genome i, seeded by `deriveSeed(options.seed, options.generation, i, t)`). evaluate()
+/// and the evaluation over MPI ranks (MpiEvaluation.h) both run their episodes here, so their
+/// results agree bit for bit however the episodes are split.
+template <class T, std::ranges::random_access_range Genomes>
+requires Task<T, std::ranges::range_value_t<Genomes>>
+void evaluateEpisodes(const T& task, const Genomes& genomes, const EvaluationOptions& options,
+                      std::size_t first, std::span<double> episodes, ThreadPool& pool) {
+  const std::size_t trials = options.trials;
+  const long steps = task.steps();
+  pool.forEach(episodes.size(), [&](std::size_t k) {
+    const std::size_t episode = first + k;
+    const std::size_t individual = episode / trials;
+    const std::size_t trial = episode % trials;
+    auto world =
+        task.makeWorld(std::ranges::begin(genomes)[static_cast<std::ptrdiff_t>(individual)],
+                       deriveSeed(options.seed, options.generation, individual, trial));
+    for (long step = 0; step < steps; ++step) world->advanceTime();
+    episodes[k] = static_cast<double>(task.fitness(*world));
+  });
+}
+
+/// The fitness of each genome from its episodes' fitnesses (genome i's trials at
+/// `[i * trials, (i + 1) * trials)`): their mean, summed in trial order.
+[[nodiscard]] inline std::vector<double> meanOverTrials(std::span<const double> episodes,
+                                                        std::size_t trials) {
+  const std::size_t count = episodes.size() / trials;
+  std::vector<double> fitness(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    double sum = 0;
+    for (std::size_t t = 0; t < trials; ++t) sum += episodes[i * trials + t];
+    fitness[i] = sum / static_cast<double>(trials);
+  }
+  return fitness;
+}
+
 /// One fitness per genome of @p genomes (a random-access range, e.g. a vector or a span): the mean
 /// over `options.trials` episodes of `task.fitness` after `task.steps()` steps of
 /// `task.makeWorld(genomes[i], seed)`, where episode t of genome i has `seed =
@@ -49,26 +87,9 @@ requires Task<T, std::ranges::range_value_t<Genomes>> std::vector<double> evalua
     const T& task, const Genomes& genomes, const EvaluationOptions& options, ThreadPool& pool) {
   if (options.trials == 0)
     throw InvalidArgument("EvaluationOptions.trials", "must be at least 1 (got 0)");
-  const std::size_t trials = options.trials;
-  const std::size_t count = std::ranges::size(genomes);
-  std::vector<double> episodes(count * trials);
-  const long steps = task.steps();
-  pool.forEach(episodes.size(), [&](std::size_t episode) {
-    const std::size_t individual = episode / trials;
-    const std::size_t trial = episode % trials;
-    auto world =
-        task.makeWorld(std::ranges::begin(genomes)[static_cast<std::ptrdiff_t>(individual)],
-                       deriveSeed(options.seed, options.generation, individual, trial));
-    for (long step = 0; step < steps; ++step) world->advanceTime();
-    episodes[episode] = static_cast<double>(task.fitness(*world));
-  });
-  std::vector<double> fitness(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    double sum = 0;
-    for (std::size_t t = 0; t < trials; ++t) sum += episodes[i * trials + t];
-    fitness[i] = sum / static_cast<double>(trials);
-  }
-  return fitness;
+  std::vector<double> episodes(std::ranges::size(genomes) * options.trials);
+  evaluateEpisodes(task, genomes, options, 0, episodes, pool);
+  return meanOverTrials(episodes, options.trials);
 }
 
 /// evaluate() on a pool of `options.threads` threads started for this call.

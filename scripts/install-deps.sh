@@ -4,6 +4,8 @@ set -euo pipefail
 packages=(cmake g++ make libgtest-dev libbenchmark-dev doxygen)
 # The Python package (python/) and its tests and examples.
 packages+=(pybind11-dev python3-dev python3-numpy python3-pytest python3-deap python3-matplotlib)
+# MPI: evaluation over the ranks of a job (thyrix::EvolutionMpi), its tests, and Python's mpi4py.
+packages+=(openmpi-bin libopenmpi-dev python3-mpi4py)
 # The GUI: wxWidgets to build it; Xvfb, xdotool and python3 for its tests (tests/gui/).
 if [ "${THYRIX_WITH_GUI:-0}" = 1 ]; then packages+=(libwxgtk3.2-dev xvfb xdotool python3); fi
 missing=()

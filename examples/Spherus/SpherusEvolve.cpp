@@ -1,7 +1,8 @@
 // SpherusEvolve: evolves a neural controller for Spherus with CMA-ES (or the self-adaptive ES),
 // evaluating each generation in parallel, and writes the run's records to --out: fitness.csv,
 // fitness.svg, best.genome and checkpoint, each replaced atomically. --resume continues a run
-// bit for bit. Run with --help for the options.
+// bit for bit. Built with MPI, `mpirun -n K SpherusEvolve ...` spreads each generation over K
+// ranks and writes the same files. Run with --help for the options.
 
 #include "SpherusTask.h"
 
@@ -16,15 +17,23 @@
 #include <Evolution/SeedDerivation.h>
 #include <Evolution/SelfAdaptiveEs.h>
 #include <Evolution/StateText.h>
+#ifdef THYRIX_SPHERUS_EVOLVE_MPI
+#include <Evolution/MpiEvaluation.h>
+#endif
 
 #include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
+#include <optional>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -46,7 +55,8 @@ const char* const usage =
     "  --population P      points a generation (default 0: CMA-ES's 4 + 3 ln n)\n"
     "  --steps S           steps of an episode (default 1000)\n"
     "  --trials K          episodes per controller; its fitness is their mean (default 1)\n"
-    "  --threads T         threads evaluating (default 1); the files do not depend on it\n"
+    "  --threads T         threads evaluating (default 1; under mpirun, per rank); the files\n"
+    "                      do not depend on it, nor on the number of ranks\n"
     "  --seed N            the run's seed (default 1)\n"
     "  --network N         ff:H1[,H2...], ff or ctrnn:N (default ff:8, a 35-8-5 network)\n"
     "  --strategy S        cma-es or sa-es (the self-adaptive ES); default cma-es\n"
@@ -57,7 +67,10 @@ const char* const usage =
     "  --checkpoint-every K  write DIR/checkpoint every K generations and at the end\n"
     "                      (default 10)\n"
     "  --resume            continue the run in DIR up to --generations\n"
-    "  --help              this text\n";
+    "  --help              this text\n"
+    "Under mpirun (when built with MPI), rank 0 runs the strategy and writes the files, every\n"
+    "rank evaluates the chunks of episodes it is handed, and the idle time of each rank is\n"
+    "printed at the end.\n";
 
 struct Options {
   SpherusGoal goal = SpherusGoal::Distance;
@@ -75,6 +88,7 @@ struct Options {
   std::uint64_t checkpointEvery = 10;
   std::string out;
   bool resume = false;
+  bool help = false;
 };
 
 double parseSigma(std::string_view text) {
@@ -92,8 +106,8 @@ Options parse(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string_view option = argv[i];
     if (option == "--help") {
-      std::fputs(usage, stdout);
-      std::exit(0);
+      o.help = true;
+      return o;
     }
     if (option == "--resume") {
       o.resume = true;
@@ -152,6 +166,45 @@ Options parse(int argc, char** argv) {
   if (o.out.empty()) throw std::invalid_argument("--out DIR is required");
   return o;
 }
+
+// SpherusTask, with a hook for the tests of a failing rank: THYRIX_TEST_FAIL_RANK=R makes rank R
+// throw in its first episode, and THYRIX_TEST_FAIL_RANK=R:kill makes it die of SIGKILL there.
+struct EvolveTask {
+  SpherusTask spherus;
+  bool fail = false;
+  bool kill = false;
+
+  [[nodiscard]] long steps() const { return spherus.steps(); }
+  [[nodiscard]] std::unique_ptr<SpherusEpisode> makeWorld(const std::vector<double>& parameters,
+                                                          std::uint64_t seed) const {
+    if (kill) std::raise(SIGKILL);
+    if (fail) throw std::runtime_error("THYRIX_TEST_FAIL_RANK: this rank fails on purpose");
+    return spherus.makeWorld(parameters, seed);
+  }
+  [[nodiscard]] double fitness(const SpherusEpisode& episode) const {
+    return spherus.fitness(episode);
+  }
+};
+
+EvolveTask makeTask(const Options& o, int rank) {
+  EvolveTask task;
+  task.spherus.goal = o.goal;
+  task.spherus.network = parseSpherusNetwork(o.network);
+  task.spherus.stepCount = o.steps;
+  task.spherus.arena.objects = o.objects;
+  task.spherus.randomPose = !o.fixedPose;
+  if (const char* fail = std::getenv("THYRIX_TEST_FAIL_RANK")) {
+    const std::string text = fail;
+    const std::string wanted = std::to_string(rank);
+    task.fail = text == wanted;
+    task.kill = text == wanted + ":kill";
+  }
+  return task;
+}
+
+// Evaluates a generation: on this process's threads, or over the ranks of an MPI job.
+using GenerationEvaluator = std::function<std::vector<double>(
+    std::span<const std::vector<double>> population, const EvaluationOptions& options)>;
 
 // The run: the strategy, the history and the best controller so far.
 struct Run {
@@ -271,16 +324,12 @@ void writeRecords(const fs::path& dir, const Options& o, const NetworkSpec& spec
   if (checkpoint) writeFileAtomically(dir / "checkpoint", checkpointText(o, run));
 }
 
-int evolve(const Options& o) {
-  SpherusTask task;
-  task.goal = o.goal;
-  task.network = parseSpherusNetwork(o.network);
-  task.stepCount = o.steps;
-  task.arena.objects = o.objects;
-  task.randomPose = !o.fixedPose;
+int evolve(const Options& o, const EvolveTask& task,
+           const GenerationEvaluator& evaluateGeneration) {
   // One episode built before anything is created or written, so that options the arena refuses (too
   // many balls) are reported without leaving a run behind.
-  (void)task.makeWorld(std::vector<double>(task.network.parameterCount(), 0.0), o.seed);
+  (void)task.spherus.makeWorld(std::vector<double>(task.spherus.network.parameterCount(), 0.0),
+                               o.seed);
   const fs::path dir = o.out;
   const fs::path checkpointPath = dir / "checkpoint";
   std::error_code error;
@@ -295,12 +344,11 @@ int evolve(const Options& o) {
     throw std::runtime_error("--resume: no checkpoint in " + o.out);
 
   Run run;
-  run.strategy = makeStrategy(o, task.network.parameterCount());
+  run.strategy = makeStrategy(o, task.spherus.network.parameterCount());
   if (o.resume) readCheckpoint(checkpointPath, o, run);
   // Written before any work, so an unwritable directory is found at once.
-  writeRecords(dir, o, task.network, run, true);
+  writeRecords(dir, o, task.spherus.network, run, true);
 
-  ThreadPool pool(o.threads);
   ProgressLine progress(stdout);
   EvaluationOptions evaluation;
   evaluation.trials = o.trials;
@@ -312,7 +360,7 @@ int evolve(const Options& o) {
     const auto population = run.strategy->ask();
     evaluation.generation = g;
     const auto start = Clock::now();
-    const std::vector<double> fitness = evaluate(task, population, evaluation, pool);
+    const std::vector<double> fitness = evaluateGeneration(population, evaluation);
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     const auto bestIndex = static_cast<std::size_t>(
         std::max_element(fitness.begin(), fitness.end()) - fitness.begin());
@@ -325,7 +373,8 @@ int evolve(const Options& o) {
     for (double f : fitness) sum += f;
     run.history.push_back(
         {g, fitness[bestIndex], sum / static_cast<double>(fitness.size()), run.bestFitness});
-    writeRecords(dir, o, task.network, run, g % o.checkpointEvery == 0 || g == o.generations);
+    writeRecords(dir, o, task.spherus.network, run,
+                 g % o.checkpointEvery == 0 || g == o.generations);
 
     const double elapsed = std::chrono::duration<double>(Clock::now() - begin).count();
     Progress p;
@@ -343,20 +392,83 @@ int evolve(const Options& o) {
   return 0;
 }
 
+#ifdef THYRIX_SPHERUS_EVOLVE_MPI
+// Rank 0 evolves and the other ranks evaluate what it hands out; then rank 0 prints each rank's
+// idle time.
+int run(const Options& o, MpiEvaluation& ranks) {
+  const EvolveTask task = makeTask(o, ranks.rank());
+  ThreadPool pool(o.threads);
+  if (ranks.rank() != 0) {
+    serveEvaluations(task, pool, ranks);
+    return 0;
+  }
+  const int status = evolve(
+      o, task,
+      [&](std::span<const std::vector<double>> population, const EvaluationOptions& options) {
+        return evaluate(task, population, options, pool, ranks);
+      });
+  if (ranks.size() > 1) {
+    std::printf("idle time of the %d ranks, while a generation was being evaluated:\n",
+                ranks.size());
+    const std::vector<RankTime>& times = ranks.rankTimes();
+    for (std::size_t r = 0; r < times.size(); ++r) {
+      const double all = times[r].busySeconds + times[r].idleSeconds;
+      std::printf("  rank %zu: idle %.3f s of %.3f s (%.1f%%)\n", r, times[r].idleSeconds, all,
+                  all > 0 ? 100 * times[r].idleSeconds / all : 0.0);
+    }
+  }
+  return status;
+}
+#else
+int run(const Options& o) {
+  const EvolveTask task = makeTask(o, 0);
+  ThreadPool pool(o.threads);
+  return evolve(
+      o, task,
+      [&](std::span<const std::vector<double>> population, const EvaluationOptions& options) {
+        return evaluate(task, population, options, pool);
+      });
+}
+#endif
+
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifdef THYRIX_SPHERUS_EVOLVE_MPI
+  std::optional<MpiEvaluation> ranks;
+  try {
+    ranks.emplace(argc, argv);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "SpherusEvolve: %s\n", error.what());
+    return 1;
+  }
+  const int rank = ranks->rank();
+  // Every rank parses the same options; rank 0 alone speaks for them.
+  const std::string who =
+      ranks->size() > 1 ? "SpherusEvolve (rank " + std::to_string(rank) + ")" : "SpherusEvolve";
+#else
+  const int rank = 0;
+  const std::string who = "SpherusEvolve";
+#endif
   Options options;
   try {
     options = parse(argc, argv);
   } catch (const std::invalid_argument& error) {
-    std::fprintf(stderr, "SpherusEvolve: %s\n%s", error.what(), usage);
+    if (rank == 0) std::fprintf(stderr, "SpherusEvolve: %s\n%s", error.what(), usage);
     return 2;
   }
+  if (options.help) {
+    if (rank == 0) std::fputs(usage, stdout);
+    return 0;
+  }
   try {
-    return evolve(options);
+#ifdef THYRIX_SPHERUS_EVOLVE_MPI
+    return run(options, *ranks);
+#else
+    return run(options);
+#endif
   } catch (const std::exception& error) {
-    std::fprintf(stderr, "SpherusEvolve: %s\n", error.what());
+    std::fprintf(stderr, "%s: %s\n", who.c_str(), error.what());
     return 1;
   }
 }

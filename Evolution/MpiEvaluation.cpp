@@ -1,0 +1,277 @@
+#include "MpiEvaluation.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <chrono>
+#include <climits>
+#include <cstdlib>
+#include <exception>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <utility>
+
+namespace thyrix {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr int requestTag = 1;  // rank -> leader: the last chunk's fitnesses, and "more, please"
+constexpr int chunkTag = 2;    // leader -> rank: the next chunk (first episode, count; 0: done)
+
+// A batch's header, broadcast by the leader: command (0 stop, 1 evaluate), genomes, dimension,
+// trials, seed, generation.
+constexpr int headerSize = 6;
+// A request: threads, first episode, count, busy seconds this generation, then the fitnesses.
+constexpr std::size_t requestHead = 4;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Waits for @p request, sleeping between tests (blocking MPI calls spin a core that this rank's
+// or another rank's threads could use).
+void waitFor(MPI_Request& request) {
+  auto pause = std::chrono::microseconds(10);
+  for (;;) {
+    int done = 0;
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return;
+    std::this_thread::sleep_for(pause);
+    pause = std::min(pause * 2, std::chrono::microseconds(500));
+  }
+}
+
+int toInt(std::size_t value, const char* what) {
+  if (value > static_cast<std::size_t>(INT_MAX))
+    throw std::runtime_error(std::string("MpiEvaluation: ") + what + " exceeds one MPI message");
+  return static_cast<int>(value);
+}
+
+}  // namespace
+
+struct MpiEvaluation::State {
+  MPI_Comm comm = MPI_COMM_NULL;
+  int rank = 0;
+  int size = 1;
+  bool startedMpi = false;
+  bool stopped = false;                      // the stop was sent (leader) or received (other ranks)
+  bool broken = false;                       // an exchange began and did not finish
+  std::vector<double> flat;                  // the genomes, one after the other
+  std::vector<std::vector<double>> genomes;  // other ranks: the genomes received
+  std::vector<double> message;
+  std::vector<std::size_t> threads;  // leader: every rank's threads, as last reported
+
+  // Leader: broadcasts @p header (and waits for it to leave).
+  void broadcast(std::uint64_t (&header)[headerSize]) {
+    MPI_Request request;
+    MPI_Ibcast(header, headerSize, MPI_UINT64_T, 0, comm, &request);
+    waitFor(request);
+  }
+};
+
+MpiEvaluation::MpiEvaluation(int& argc, char**& argv) : state_(std::make_unique<State>()) {
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  int provided = MPI_THREAD_SINGLE;
+  if (initialized) {
+    MPI_Query_thread(&provided);
+  } else {
+    MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+    state_->startedMpi = true;
+  }
+  if (provided < MPI_THREAD_FUNNELED) {
+    if (state_->startedMpi) MPI_Finalize();
+    throw std::runtime_error("MpiEvaluation: MPI does not support threads (MPI_THREAD_FUNNELED)");
+  }
+  MPI_Comm_dup(MPI_COMM_WORLD, &state_->comm);
+  MPI_Comm_rank(state_->comm, &state_->rank);
+  MPI_Comm_size(state_->comm, &state_->size);
+  if (state_->rank == 0) times_.resize(static_cast<std::size_t>(state_->size));
+}
+
+MpiEvaluation::~MpiEvaluation() {
+  State& s = *state_;
+  if (s.broken) abort(1);
+  if (s.size > 1 && !s.stopped) {
+    std::uint64_t header[headerSize] = {};
+    s.broadcast(header);
+    // Another rank that never served learns here that the leader went on without it.
+    if (s.rank != 0 && header[0] != 0) abort(1);
+  }
+  MPI_Comm_free(&s.comm);
+  if (s.startedMpi) MPI_Finalize();
+}
+
+int MpiEvaluation::rank() const { return state_->rank; }
+
+int MpiEvaluation::size() const { return state_->size; }
+
+void MpiEvaluation::abort(int status) const {
+  MPI_Abort(MPI_COMM_WORLD, status);
+  std::_Exit(status);
+}
+
+void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::span<double> episodes,
+                               const ChunkJob& job) {
+  State& s = *state_;
+  if (s.rank != 0) throw std::logic_error("MpiEvaluation::distribute: only rank 0 distributes");
+  const auto start = Clock::now();
+  const std::size_t total = episodes.size();
+  if (s.size == 1) {
+    job(batch, 0, episodes);
+    times_[0].busySeconds += secondsSince(start);
+    return;
+  }
+  const std::size_t dimension = batch.genomes.empty() ? 0 : batch.genomes[0].size();
+  s.flat.clear();
+  for (const std::vector<double>& genome : batch.genomes)
+    s.flat.insert(s.flat.end(), genome.begin(), genome.end());
+  const int flatCount = toInt(s.flat.size(), "the population");
+  (void)toInt(total + requestHead, "the episodes");
+  s.broken = true;
+  std::uint64_t header[headerSize] = {1,
+                                      batch.genomes.size(),
+                                      dimension,
+                                      batch.options.trials,
+                                      batch.options.seed,
+                                      batch.options.generation};
+  s.broadcast(header);
+  MPI_Request request;
+  MPI_Ibcast(s.flat.data(), flatCount, MPI_DOUBLE, 0, s.comm, &request);
+  waitFor(request);
+
+  s.threads.assign(static_cast<std::size_t>(s.size), threads);
+  std::mutex mutex;
+  std::size_t next = 0;  // the first episode not yet handed out
+  bool stop = false;     // the leader's task threw: hand out nothing more
+  // Guided self-scheduling: a rank with t of the T threads gets t/(2T) of what is left, in
+  // multiples of t, so chunks shrink as the generation ends and every rank finishes about together.
+  auto take = [&](std::size_t rankThreads) {
+    std::lock_guard lock(mutex);
+    std::size_t allThreads = 0;
+    for (std::size_t t : s.threads) allThreads += t;
+    const std::size_t left = stop ? 0 : total - next;
+    std::size_t count = (left * rankThreads + 2 * allThreads - 1) / (2 * allThreads);
+    count = std::min(left,
+                     (std::max(count, rankThreads) + rankThreads - 1) / rankThreads * rankThreads);
+    const std::pair<std::size_t, std::size_t> chunk{next, count};
+    next += count;
+    return chunk;
+  };
+  std::exception_ptr localError;
+  double localBusy = 0;
+  {
+    std::jthread local([&] {
+      try {
+        for (;;) {
+          const auto [first, count] = take(threads);
+          if (count == 0) break;
+          const auto begin = Clock::now();
+          job(batch, first, episodes.subspan(first, count));
+          localBusy += secondsSince(begin);
+        }
+      } catch (...) {
+        localError = std::current_exception();
+        std::lock_guard lock(mutex);
+        stop = true;
+      }
+    });
+    std::vector<double> busy(static_cast<std::size_t>(s.size), 0.0);
+    int finished = 0;  // ranks told that the generation is done
+    auto pause = std::chrono::microseconds(10);
+    while (finished < s.size - 1) {
+      int arrived = 0;
+      MPI_Status status;
+      MPI_Iprobe(MPI_ANY_SOURCE, requestTag, s.comm, &arrived, &status);
+      if (!arrived) {
+        std::this_thread::sleep_for(pause);
+        pause = std::min(pause * 2, std::chrono::microseconds(500));
+        continue;
+      }
+      pause = std::chrono::microseconds(10);
+      int length = 0;
+      MPI_Get_count(&status, MPI_DOUBLE, &length);
+      s.message.resize(static_cast<std::size_t>(length));
+      MPI_Recv(s.message.data(), length, MPI_DOUBLE, status.MPI_SOURCE, requestTag, s.comm,
+               MPI_STATUS_IGNORE);
+      const auto source = static_cast<std::size_t>(status.MPI_SOURCE);
+      const auto first = static_cast<std::size_t>(s.message[1]);
+      const auto count = static_cast<std::size_t>(s.message[2]);
+      busy[source] = s.message[3];
+      std::copy_n(s.message.begin() + requestHead, count,
+                  episodes.begin() + static_cast<std::ptrdiff_t>(first));
+      {
+        std::lock_guard lock(mutex);
+        s.threads[source] = std::max<std::size_t>(1, static_cast<std::size_t>(s.message[0]));
+      }
+      const auto [nextFirst, nextCount] = take(s.threads[source]);
+      std::uint64_t reply[2] = {nextFirst, nextCount};
+      MPI_Send(reply, 2, MPI_UINT64_T, status.MPI_SOURCE, chunkTag, s.comm);
+      if (nextCount == 0) ++finished;
+    }
+    local.join();
+    busy[0] = localBusy;
+    const double wall = secondsSince(start);
+    for (std::size_t r = 0; r < busy.size(); ++r) {
+      times_[r].busySeconds += busy[r];
+      times_[r].idleSeconds += std::max(0.0, wall - busy[r]);
+    }
+  }
+  s.broken = false;
+  if (localError) std::rethrow_exception(localError);
+}
+
+void MpiEvaluation::serve(std::size_t threads, const ChunkJob& job) {
+  State& s = *state_;
+  if (s.rank == 0) throw std::logic_error("MpiEvaluation::serve: rank 0 distributes");
+  while (!s.stopped) {
+    std::uint64_t header[headerSize] = {};
+    s.broadcast(header);
+    if (header[0] == 0) {
+      s.stopped = true;
+      break;
+    }
+    s.broken = true;
+    const std::size_t count = header[1];
+    const std::size_t dimension = header[2];
+    s.flat.resize(count * dimension);
+    MPI_Request request;
+    MPI_Ibcast(s.flat.data(), static_cast<int>(s.flat.size()), MPI_DOUBLE, 0, s.comm, &request);
+    waitFor(request);
+    s.genomes.resize(count);
+    for (std::size_t i = 0; i < count; ++i)
+      s.genomes[i].assign(s.flat.begin() + static_cast<std::ptrdiff_t>(i * dimension),
+                          s.flat.begin() + static_cast<std::ptrdiff_t>((i + 1) * dimension));
+    Batch batch;
+    batch.genomes = s.genomes;
+    batch.options.threads = threads;
+    batch.options.trials = header[3];
+    batch.options.seed = header[4];
+    batch.options.generation = header[5];
+    s.message.assign(requestHead, 0.0);
+    s.message[0] = static_cast<double>(threads);
+    double busy = 0;
+    for (;;) {
+      MPI_Send(s.message.data(), static_cast<int>(s.message.size()), MPI_DOUBLE, 0, requestTag,
+               s.comm);
+      std::uint64_t reply[2] = {};
+      MPI_Irecv(reply, 2, MPI_UINT64_T, 0, chunkTag, s.comm, &request);
+      waitFor(request);
+      if (reply[1] == 0) break;
+      s.message.resize(requestHead + reply[1]);
+      s.message[1] = static_cast<double>(reply[0]);
+      s.message[2] = static_cast<double>(reply[1]);
+      const auto begin = Clock::now();
+      job(batch, reply[0], std::span<double>(s.message).subspan(requestHead));
+      busy += secondsSince(begin);
+      s.message[3] = busy;
+    }
+    s.broken = false;
+  }
+}
+
+}  // namespace thyrix
