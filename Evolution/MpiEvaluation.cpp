@@ -148,14 +148,14 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
   std::mutex mutex;
   std::size_t next = 0;  // the first episode not yet handed out
   bool stop = false;     // the leader's task threw: hand out nothing more
-  // Guided self-scheduling: a rank with t of the T threads gets t/(2T) of what is left, in
-  // multiples of t, so chunks shrink as the generation ends and every rank finishes about together.
+  // Guided self-scheduling: a rank with t of the T threads gets t/(4T) of what is left, in
+  // multiples of t, so chunks shrink as the generation ends and the ranks finish about together.
   auto take = [&](std::size_t rankThreads) {
     std::lock_guard lock(mutex);
     std::size_t allThreads = 0;
     for (std::size_t t : s.threads) allThreads += t;
     const std::size_t left = stop ? 0 : total - next;
-    std::size_t count = (left * rankThreads + 2 * allThreads - 1) / (2 * allThreads);
+    std::size_t count = (left * rankThreads + 4 * allThreads - 1) / (4 * allThreads);
     count = std::min(left,
                      (std::max(count, rankThreads) + rankThreads - 1) / rankThreads * rankThreads);
     const std::pair<std::size_t, std::size_t> chunk{next, count};
