@@ -41,7 +41,7 @@ void waitFor(MPI_Request& request) {
     MPI_Test(&request, &done, MPI_STATUS_IGNORE);
     if (done) return;
     std::this_thread::sleep_for(pause);
-    pause = std::min(pause * 2, std::chrono::microseconds(500));
+    pause = std::min(pause * 2, std::chrono::microseconds(100));
   }
 }
 
@@ -189,7 +189,7 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
       MPI_Iprobe(MPI_ANY_SOURCE, requestTag, s.comm, &arrived, &status);
       if (!arrived) {
         std::this_thread::sleep_for(pause);
-        pause = std::min(pause * 2, std::chrono::microseconds(500));
+        pause = std::min(pause * 2, std::chrono::microseconds(100));
         continue;
       }
       pause = std::chrono::microseconds(10);
