@@ -324,8 +324,8 @@ void writeRecords(const fs::path& dir, const Options& o, const NetworkSpec& spec
   if (checkpoint) writeFileAtomically(dir / "checkpoint", checkpointText(o, run));
 }
 
-int evolve(const Options& o, const EvolveTask& task,
-           const GenerationEvaluator& evaluateGeneration) {
+int evolve(const Options& o, const EvolveTask& task, const GenerationEvaluator& evaluateGeneration,
+           ProgressLine& progress) {
   // One episode built before anything is created or written, so that options the arena refuses (too
   // many balls) are reported without leaving a run behind.
   (void)task.spherus.makeWorld(std::vector<double>(task.spherus.network.parameterCount(), 0.0),
@@ -349,7 +349,6 @@ int evolve(const Options& o, const EvolveTask& task,
   // Written before any work, so an unwritable directory is found at once.
   writeRecords(dir, o, task.spherus.network, run, true);
 
-  ProgressLine progress(stdout);
   EvaluationOptions evaluation;
   evaluation.trials = o.trials;
   evaluation.seed = o.seed;
@@ -402,11 +401,15 @@ int run(const Options& o, MpiEvaluation& ranks) {
     serveEvaluations(task, pool, ranks);
     return 0;
   }
+  // Under mpirun the output reaches the terminal or the job's log through Open MPI, which makes
+  // stdout look like a terminal either way: plain lines, readable in a log.
+  ProgressLine progress = ranks.size() == 1 ? ProgressLine(stdout) : ProgressLine(stdout, false);
   const int status = evolve(
       o, task,
       [&](std::span<const std::vector<double>> population, const EvaluationOptions& options) {
         return evaluate(task, population, options, pool, ranks);
-      });
+      },
+      progress);
   if (ranks.size() > 1) {
     std::printf("idle time of the %d ranks, while a generation was being evaluated:\n",
                 ranks.size());
@@ -423,11 +426,13 @@ int run(const Options& o, MpiEvaluation& ranks) {
 int run(const Options& o) {
   const EvolveTask task = makeTask(o, 0);
   ThreadPool pool(o.threads);
+  ProgressLine progress(stdout);
   return evolve(
       o, task,
       [&](std::span<const std::vector<double>> population, const EvaluationOptions& options) {
         return evaluate(task, population, options, pool);
-      });
+      },
+      progress);
 }
 #endif
 
