@@ -95,6 +95,9 @@ MpiEvaluation::MpiEvaluation(int& argc, char**& argv) : state_(std::make_unique<
 
 MpiEvaluation::~MpiEvaluation() {
   State& s = *state_;
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (finalized) return;  // whoever started MPI ended it first
   if (s.broken) abort(1);
   if (s.size > 1 && !s.stopped) {
     std::uint64_t header[headerSize] = {};
