@@ -14,7 +14,7 @@ __all__ = [name for name in dir() if not name.startswith("_")] + ["evaluate"]
 
 
 def evaluate(genomes, task="distance", steps=1000, trials=1, threads=None, seed=1,
-             generation=0, network="ff:8", objects=20, random_pose=True):
+             generation=0, network="ff:8", objects=20, random_pose=True, comm=None):
     """Fitness of each genome of a population on a Spherus task, in parallel.
 
     Args:
@@ -33,6 +33,10 @@ def evaluate(genomes, task="distance", steps=1000, trials=1, threads=None, seed=
         network: ``"ff"``, ``"ff:H1[,H2...]"``, ``"ctrnn:N"`` or a ``NetworkSpec``.
         objects: balls in the arena.
         random_pose: start the agent at a pose drawn from the episode's seed.
+        comm: an mpi4py communicator, to spread the episodes over its ranks (``thyrix.mpi``):
+            every rank calls ``evaluate`` with the same options, rank 0 with the genomes (the
+            others may pass ``None``); rank 0 gets the fitnesses, the same numbers as without
+            ``comm``, the other ranks ``None``. ``threads`` is then per rank.
 
     Returns:
         A float64 array of shape ``(P,)``: the same numbers as the C++ ``thyrix::evaluate``
@@ -49,4 +53,9 @@ def evaluate(genomes, task="distance", steps=1000, trials=1, threads=None, seed=
     for name, value in (("trials", trials), ("threads", threads)):
         if isinstance(value, bool) or not isinstance(value, (int, _np.integer)) or value < 1:
             raise ValueError(f"{name} must be a positive integer (got {value!r})")
+    if comm is not None:
+        from . import mpi as _mpi  # imports mpi4py only when asked to
+
+        return _mpi.evaluate(comm, genomes, task, int(trials), int(threads), int(seed),
+                             int(generation))
     return evaluate_task(task, genomes, int(trials), int(threads), int(seed), int(generation))

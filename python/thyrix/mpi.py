@@ -1,0 +1,134 @@
+"""``thyrix.evaluate`` over the ranks of an mpi4py job.
+
+Every rank of the communicator calls :func:`evaluate` with the same options; rank 0 passes the
+genomes (the other ranks pass ``None``). Rank 0 broadcasts them and hands out chunks of episodes
+on demand, large first and smaller towards the end, so that no rank idles long; every rank runs
+its chunks on its own threads, rank 0 included. The fitnesses, returned on rank 0 (``None``
+elsewhere), are the same numbers, bit for bit, as ``thyrix.evaluate`` in one process, for any
+number of ranks and threads. A rank whose evaluation raises prints the error and ends the whole
+job (``MPI_Abort``), so that no rank waits for it forever.
+"""
+
+import sys
+import threading
+import time
+import traceback
+
+import numpy as _np
+from mpi4py import MPI
+
+from ._thyrix import evaluate_episodes
+
+_REQUEST = 3071  # rank -> rank 0: the last chunk's fitnesses, and "more, please"
+_CHUNK = 3072  # rank 0 -> rank: the next chunk (first episode, count; count 0: done)
+
+
+def _wait(request):
+    """Waits for a nonblocking request, sleeping between tests (a blocking call spins a core)."""
+    pause = 1e-5
+    while not request.Test():
+        time.sleep(pause)
+        pause = min(pause * 2, 1e-4)
+
+
+def _abort(comm, rank):
+    sys.stderr.write(f"thyrix.evaluate (rank {rank}): {traceback.format_exc()}")
+    sys.stderr.flush()
+    comm.Abort(1)
+
+
+def evaluate(comm, genomes, task, trials, threads, seed, generation):
+    """The episodes' work of ``thyrix.evaluate(..., comm=comm)``; see the module's text."""
+    rank, size = comm.Get_rank(), comm.Get_size()
+    header = None
+    if rank == 0:
+        try:  # checks the genomes (shape, finite values) and runs no episode
+            genomes = _np.ascontiguousarray(genomes, dtype=_np.float64)
+            evaluate_episodes(task, genomes, trials, threads, seed, generation, 0, 0)
+            header = genomes.shape
+        except (TypeError, ValueError) as error:
+            header = f"{type(error).__name__}: {error}"
+    header = comm.bcast(header, root=0)
+    if isinstance(header, str):  # every rank raises the same error
+        kind, message = header.split(": ", 1)
+        raise (TypeError if kind == "TypeError" else ValueError)(message)
+    shape = header
+    if rank != 0:
+        genomes = _np.empty(shape, dtype=_np.float64)
+    comm.Bcast(genomes, root=0)
+    total = shape[0] * trials
+
+    def run(first, count):
+        return evaluate_episodes(task, genomes, trials, threads, seed, generation, first, count)
+
+    if rank != 0:
+        comm.send((threads, 0, None), dest=0, tag=_REQUEST)
+        while True:
+            reply = _np.empty(2, dtype=_np.int64)
+            _wait(comm.Irecv(reply, source=0, tag=_CHUNK))
+            first, count = int(reply[0]), int(reply[1])
+            if count == 0:
+                return None
+            try:
+                result = run(first, count)
+            except BaseException:  # noqa: B902  (any failure ends the job)
+                _abort(comm, rank)
+            comm.send((threads, first, result), dest=0, tag=_REQUEST)
+
+    episodes = _np.empty(total, dtype=_np.float64)
+    lock = threading.Lock()
+    state = {"next": 0, "stop": False, "error": None}
+    rank_threads = [threads] * size
+
+    def take(rank_threads_now):
+        # Guided self-scheduling: t of the T threads get t/(4T) of what is left, in multiples of t.
+        with lock:
+            left = 0 if state["stop"] else total - state["next"]
+            all_threads = sum(rank_threads)
+            count = -(-left * rank_threads_now // (4 * all_threads))
+            count = min(left, -(-max(count, rank_threads_now) // rank_threads_now) * rank_threads_now)
+            first = state["next"]
+            state["next"] += count
+            return first, count
+
+    def local():
+        try:
+            while True:
+                first, count = take(threads)
+                if count == 0:
+                    return
+                episodes[first:first + count] = run(first, count)
+        except BaseException as error:  # noqa: B902  (raised again on rank 0's thread)
+            with lock:
+                state["stop"] = True
+                state["error"] = error
+
+    worker = threading.Thread(target=local, daemon=True)
+    worker.start()
+    finished = 0
+    status = MPI.Status()
+    pause = 1e-5
+    while finished < size - 1:
+        if not comm.Iprobe(source=MPI.ANY_SOURCE, tag=_REQUEST, status=status):
+            time.sleep(pause)
+            pause = min(pause * 2, 1e-4)
+            continue
+        pause = 1e-5
+        source = status.Get_source()
+        source_threads, first, result = comm.recv(source=source, tag=_REQUEST)
+        if result is not None:
+            episodes[first:first + len(result)] = result
+        with lock:
+            rank_threads[source] = max(1, int(source_threads))
+        chunk = _np.array(take(rank_threads[source]), dtype=_np.int64)
+        comm.Send(chunk, dest=source, tag=_CHUNK)
+        if chunk[1] == 0:
+            finished += 1
+    worker.join()
+    if state["error"] is not None:
+        raise state["error"]
+    # Summed in trial order from 0, as thyrix::evaluate does, for the same bits.
+    fitness = _np.zeros(shape[0], dtype=_np.float64)
+    for t in range(trials):
+        fitness += episodes[t::trials]
+    return fitness / trials
