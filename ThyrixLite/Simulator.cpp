@@ -170,7 +170,15 @@ void Simulator::advanceTime() {
   if (!listsAfter) indexContacts();
   applyMouseForce();
   computeDerivativesWithoutContacts();
+  statistics_.substeps = 1;
+  mayDivide_ = listsAfter && eulerIntegrator_;
   solveContacts();
+  mayDivide_ = false;
+  if (parts_ > 1) {  // (the objects still hold their free velocities)
+    stepInParts();
+    World::advanceTime();
+    return;
+  }
   if (listsAfter) indexContacts();
   for (const std::uint32_t i : customObjects_) objects[i].control();  // the others do nothing
   // Phase 8: explicit Euler in its loop without virtual calls, unless replaced.

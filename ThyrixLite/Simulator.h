@@ -41,6 +41,10 @@ struct StepStatistics {
   /// Detections run again because the solve moved a shape past a border that detection had
   /// not reached (Simulator::advanceTime()); 0 in almost every step.
   std::size_t redetections = 0;
+  /// Equal parts the step was run in, each detected, solved and integrated on its own, because
+  /// the solve moved a point of a shape farther than its radius in one step
+  /// (Simulator::advanceTime()); 1 in almost every step.
+  std::size_t substeps = 1;
 };
 
 /// A World that advances in time with quasistatic dynamics.
@@ -51,6 +55,13 @@ struct StepStatistics {
 /// field);
 /// 6. solveContacts(); 7. each object's control(); 8. integrator().integrate() (explicit
 /// Euler unless setIntegrator() replaced it); then World::advanceTime() counts the step.
+/// In a world of core shapes only, integrated by explicit Euler, a step whose solve would move
+/// a point of a shape farther than the shape's radius is run instead in equal substeps (phases
+/// 2 and 6 and 8 each, from the same free velocities) short enough that each moves every point
+/// by at most half its radius: contacts are linear in the motion, which an arc of a turning
+/// capsule or a Gauss-Seidel error of a light body follows only for small motions
+/// (StepStatistics::substeps; the users' guide, "Walls"). The phases run by hand never divide a
+/// step; the same as advanceTime() wherever no step is divided.
 /// In a world of core shapes only (no object with hooks of its own, no articulated agent),
 /// phase 3 runs after phase 6, with the forces: nothing reads the lists in between, and after
 /// the step they are the same.
@@ -427,6 +438,8 @@ class Simulator : public World {
   /// solveContacts() once: @return true if it stopped short, its velocities carrying a shape
   /// past a border unseen (only if @p mayRedetect), leaving the objects' free velocities.
   bool solveOnce(bool mayRedetect);
+  /// The length of the step or substep being solved: timestep() but within stepInParts().
+  [[nodiscard]] real solveStep() const { return substep_ > 0 ? substep_ : timestep(); }
   void solveGeneralIsland(std::span<const std::uint32_t> island);
   /// Shape @p shape is a circle that is its own body (not a part of a composed body): its
   /// contacts' normals go through its centre. Reads the shape table, not the objects.
@@ -450,6 +463,13 @@ class Simulator : public World {
   // than their margin in the step get those contacts solved alone (holdAtWalls()).
   void holdWalls(std::span<const std::uint32_t> island);
   void holdAtWalls(std::span<const std::uint32_t> island, std::uint32_t body);
+  // Into how many equal parts this solve's motion (bodies_) of the @p moved bodies must be
+  // divided so that no point of a shape moves farther than half its radius in one; 1 if none
+  // moves farther than its radius.
+  [[nodiscard]] std::uint32_t partsNeeded(std::span<const std::uint32_t> moved) const;
+  // Phases 2, 6 and 8 again in parts_ equal substeps from the free velocities, each divided
+  // further where its solve asks, up to maxSubsteps in all; phase 3 after the last.
+  void stepInParts();
   [[nodiscard]] static bool immovable(const SolverBody& body) {
     return body.inverseMass == 0 && body.inverseInertia == 0;
   }
@@ -596,6 +616,18 @@ class Simulator : public World {
   bool widening_ = false;  // this detection recomputes every shape, with widenMargins()' margins
   bool marginsWidened_ = false;  // the margins are widenMargins()': the next detection resets them
   real smallestRadius_ = realMax;  // of the shapes other than borders registered so far
+  // The most substeps a step is divided into (stepInParts()).
+  static constexpr std::uint32_t maxSubsteps = 64;
+  bool mayDivide_ = false;   // the solve may ask for the step to be divided (advanceTime())
+  std::uint32_t parts_ = 1;  // the substeps the last solve asked for (1: none)
+  real substep_ = 0;         // the substep being run, 0 outside stepInParts()
+  struct StepStart {         // an object's pose and free velocities at the start of a divided step
+    Vector2 r;
+    real alpha = 0;
+    Vector2 v;
+    real omega = 0;
+  };
+  std::vector<StepStart> stepStarts_;  // every object's, saved for the substeps
 };
 
 }  // namespace thyrix

@@ -2,6 +2,7 @@
 /// @brief What keeps shapes inside the borders whatever the mass ratios: phase 6's check that
 /// the solved motion stays within the walls detection saw (with the detection again, with
 /// margins that cover the motion, when it does not), and Gauss-Seidel's error kept off walls.
+#include <ThyrixLite/Integrator.h>
 #include <ThyrixLite/Simulator.h>
 
 #include <algorithm>
@@ -23,7 +24,7 @@ bool Simulator::outranMargins(std::span<const std::uint32_t> moved) const {
   // Detection made a contact for every end of a shape within its margin plus travel of a
   // border: an end that moves less cannot cross a border unseen (the common case, one test per
   // end). One that moves more is checked against each border.
-  const real dt = timestep();
+  const real dt = solveStep();
   // Every shape's reach is at least the margin of the smallest radius: a body none of whose
   // points moves farther (judged from its box, which its centre of mass is in) needs no more.
   const real leastReach = settings_.speculativeFraction * smallestRadius_;
@@ -72,7 +73,7 @@ void Simulator::widenMargins() {
   // solve's velocities where it ran, else the free ones), so that the next solve, which may
   // move them faster, still sees every border they can reach. (Travel is 0 in a detection at
   // the same poses: the margin alone must cover the motion.)
-  const real dt = timestep();
+  const real dt = solveStep();
   for (std::uint32_t i = 0; i < objects.size(); ++i) {
     const PhysicalObject& object = objects[i];
     if (object.fixed) continue;
@@ -106,7 +107,7 @@ void Simulator::holdWalls(std::span<const std::uint32_t> island) {
   // immovable body it carries the shape through a wall. So a body whose wall contact is left
   // violated by more than its margin in the step gets its wall rows solved alone, the walls
   // as the last word: the error stays between bodies.
-  const real dt = timestep();
+  const real dt = solveStep();
   const std::size_t contactCount = contacts.size();
   for (const std::uint32_t k : island) {
     if (k >= contactCount) continue;
@@ -143,6 +144,82 @@ void Simulator::holdAtWalls(std::span<const std::uint32_t> island, std::uint32_t
     }
     if (largest <= settings_.gaussSeidelTolerance) return;
   }
+}
+
+std::uint32_t Simulator::partsNeeded(std::span<const std::uint32_t> moved) const {
+  // A contact is linear in the motion: the arc of a turning shape's end, or a body that a
+  // Gauss-Seidel error throws across its neighbours, departs from it by more than the margins
+  // once a point moves about its radius. Such a step is divided so that each part moves every
+  // point by at most half its radius.
+  const real dt = solveStep();
+  std::uint32_t parts = 1;
+  for (const std::uint32_t i : moved) {
+    const SolverBody& body = bodies_[i];
+    const PhysicalObject& object = objects[i];
+    const Vector2 size = object.boxMax - object.boxMin;
+    if ((std::abs(body.v.x) + std::abs(body.v.y) + std::abs(body.omega) * (size.x + size.y)) * dt <=
+        smallestRadius_)
+      continue;
+    const BodyState& state = bodyStates_[i];
+    for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
+      const ShapeGeometry& g = geometry_[s];
+      const real travel = std::max(travelBound(body.v, body.omega, g.p0 - object.r, dt),
+                                   travelBound(body.v, body.omega, g.p1 - object.r, dt));
+      if (!(travel > g.radius)) continue;
+      const real wanted = std::ceil(2 * travel / g.radius);
+      parts = std::max(
+          parts, wanted < real(maxSubsteps) ? static_cast<std::uint32_t>(wanted) : maxSubsteps);
+    }
+  }
+  return parts;
+}
+
+void Simulator::stepInParts() {
+  // Under F = m v the free velocities hold for the whole step: each substep starts from them,
+  // detects at its poses and solves for its length.
+  if (stepStarts_.size() < objects.size()) stepStarts_.resize(objects.size());
+  for (std::uint32_t i = 0; i < objects.size(); ++i) {
+    const PhysicalObject& object = objects[i];
+    stepStarts_[i] = {object.r, object.alpha, object.v, object.omega};
+  }
+  std::uint32_t total = parts_;
+  std::uint32_t left = parts_;
+  real time = timestep();
+  while (left > 0) {
+    substep_ = time / static_cast<real>(left);
+    for (std::uint32_t i = 0; i < objects.size(); ++i) {
+      objects[i].v = stepStarts_[i].v;
+      objects[i].omega = stepStarts_[i].omega;
+    }
+    eraseContacts();
+    detectContacts();
+    parts_ = 1;
+    mayDivide_ = 2 * total <= maxSubsteps;
+    solveContacts();
+    mayDivide_ = false;
+    if (parts_ > 1) {
+      const std::uint32_t more = std::min(parts_, maxSubsteps / total);
+      total *= more;
+      left *= more;
+      continue;
+    }
+    Integrator::integrateExcept(objects, customObjects_, substep_);
+    time -= substep_;
+    --left;
+  }
+  // The velocities the step ends with are those that moved each body over the whole step (the
+  // last substep's say little about the step, and can be many times faster).
+  const real dt = timestep();
+  for (std::uint32_t i = 0; i < objects.size(); ++i) {
+    PhysicalObject& object = objects[i];
+    if (object.fixed) continue;
+    object.v = (object.r - stepStarts_[i].r) / dt;
+    object.omega = (object.alpha - stepStarts_[i].alpha) / dt;
+  }
+  parts_ = 1;
+  substep_ = 0;
+  statistics_.substeps = total;
+  indexContacts();
 }
 
 }  // namespace thyrix

@@ -30,7 +30,7 @@ bool Simulator::solveOnce(bool mayRedetect) {
   statistics_.islands = statistics_.solvedIslands = 0;
   statistics_.gaussSeidelSweeps = statistics_.baraffPivots = statistics_.baraffFallbacks = 0;
   statistics_.baraffOversizedIslands = 0;
-  const real dt = timestep();
+  const real dt = solveStep();
   internal_.clear();
   internalOwner_.clear();
   if (hasMultiBodies_) {
@@ -207,6 +207,11 @@ bool Simulator::solveOnce(bool mayRedetect) {
       continue;
     }
     solveIsland(island);
+  }
+  parts_ = mayDivide_ ? partsNeeded({touched, movedCount}) : 1;
+  if (parts_ > 1) {  // the objects keep their free velocities for the substeps
+    for (std::size_t k = 0; k < contacts.size(); ++k) contacts.items_[k].force = rows_[k].force;
+    return false;
   }
   if (mayRedetect && outranMargins({touched, movedCount})) {
     // Detected again: the objects keep their free velocities, the contacts these forces (the
