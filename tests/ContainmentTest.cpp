@@ -15,7 +15,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <memory>
+#include <type_traits>
+#include <vector>
 
 namespace thyrix {
 namespace {
@@ -82,6 +85,32 @@ TEST_P(ContainmentTest, RandomWorldsWithLargeMassRatiosStayInTheirBox) {
     leaks += run.leakStep >= 0 ? 1 : 0;
   }
   EXPECT_EQ(leaks, 0);
+}
+
+// The seeds of the sweep above (over seeds 0 to 999 in double, 0 to 299 in float) whose worlds
+// still put a shape's core past a wall after the re-detection and the walls held after
+// Gauss-Seidel: a light capsule turned by radians in one step by Gauss-Seidel's error between
+// heavy bodies (Baraff hands islands of more than 32 contacts to it), whose linearised wall
+// contact its end's arc departs from. In double 17 of 1000 worlds leaked with Baraff and 23
+// with Gauss-Seidel, in float 7 and 3 of 300; the first of them each (all of them in float)
+// must stay inside now that such steps are divided.
+TEST_P(ContainmentTest, WorldsWhoseLightBodiesTurnByRadiansStayInTheirBox) {
+  const bool baraff = GetParam() == ContactSolverKind::Baraff;
+  std::vector<std::uint32_t> seeds;
+  if constexpr (std::is_same_v<real, float>)
+    seeds = baraff ? std::vector<std::uint32_t>{12, 19, 130, 161, 208, 220, 290}
+                   : std::vector<std::uint32_t>{77, 221, 236};
+  else
+    seeds = baraff ? std::vector<std::uint32_t>{19, 30, 73, 161, 185}
+                   : std::vector<std::uint32_t>{17, 72, 73, 101, 133};
+  for (const std::uint32_t seed : seeds) {
+    test::BoxedWorld world = test::makeBoxedWorld(seed, GetParam());
+    const test::BoxedRun run = test::runBoxedWorld(world, 1000);
+    const real widthPerStep = 2 * world.halfWidth / world.simulator->timestep();
+    EXPECT_LE(run.deepest, 1) << "seed " << seed << ": a shape's core went past a wall at step "
+                              << run.leakStep;
+    EXPECT_LT(run.fastest, widthPerStep) << "seed " << seed;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(BothSolvers, ContainmentTest,
