@@ -4,6 +4,8 @@
 #include <ThyrixLite/Border.h>
 #include <ThyrixLite/CappedRectangle.h>
 #include <ThyrixLite/Circle.h>
+#include <ThyrixLite/ComposedPhysicalObject.h>
+#include <ThyrixLite/Elastoid.h>
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixLite/Simulator.h>
 #include <gtest/gtest.h>
@@ -201,6 +203,39 @@ const std::vector<BadInput>& badInputs() {
        [](TestWorld& w) {
          w.simulator.startDrag(*w.bodies[0], {kNaN, 0});
        }},
+      // An object owned elsewhere, handed over in a second unique_ptr: refused and not
+      // destroyed (the world still holds it, or its body or carrier does).
+      {"SameObjectTwice", "World.registerObject.object",
+       [](TestWorld& w) {
+         w.simulator.registerObject(std::unique_ptr<PhysicalObject>(w.bodies[0]));
+       }},
+      {"ObjectOfAnotherSimulator", "World.registerObject.object",
+       [](TestWorld& w) {
+         TestWorld other;
+         w.simulator.registerObject(std::unique_ptr<PhysicalObject>(other.bodies[0]));
+       }},
+      {"PartOfAComposedBody", "World.registerObject.object",
+       [](TestWorld& w) {
+         ComposedPhysicalObject body;
+         auto& part = body.add(circleAt({3, 3}), {0, 0});
+         w.simulator.registerObject(std::unique_ptr<Circle>(&part));
+       }},
+      {"SubBodyOfAnotherObject", "World.registerObject.object",
+       [](TestWorld& w) {
+         Elastoid carrier;
+         auto& body = carrier.addBody(circleAt({3, 3}));
+         w.simulator.registerObject(std::unique_ptr<Circle>(&body));
+       }},
+      {"RegisteredObjectAsPart", "ComposedPhysicalObject.part",
+       [](TestWorld& w) {
+         ComposedPhysicalObject body;
+         body.add(std::unique_ptr<Circle>(static_cast<Circle*>(w.bodies[0])), {0, 0});
+       }},
+      {"RegisteredObjectAsSubBody", "PhysicalObject.addSubBody.body",
+       [](TestWorld& w) {
+         Elastoid carrier;
+         carrier.addBody(std::unique_ptr<Circle>(static_cast<Circle*>(w.bodies[0])));
+       }},
       {"DragToNaN", "Simulator.dragTo.target",
        [](TestWorld& w) {
          w.simulator.dragTo({0, kNaN});
@@ -252,6 +287,47 @@ INSTANTIATE_TEST_SUITE_P(ValidationTest, RefusedInputTest, ::testing::ValuesIn(b
                          [](const ::testing::TestParamInfo<BadInput>& testInfo) {
                            return std::string(testInfo.param.name);
                          });
+
+TEST(ValidationTest, RefusedPartOfARegisteredBodyKeepsTheBodyWhole) {
+  // A composed body in the world, whose part is then handed to registerObject: the refusal must
+  // not destroy the part the body still steps with.
+  TestWorld world;
+  TestWorld reference;
+  Circle* part = nullptr;
+  for (TestWorld* w : {&world, &reference}) {
+    auto body = std::make_unique<ComposedPhysicalObject>();
+    auto& tip = body->add(std::make_unique<Circle>(real(0.25), 1), {0, 0});
+    body->add(std::make_unique<CappedRectangle>(real(0.5), real(0.2), 1), {real(0.6), 0});
+    body->r = {3, real(0.3)};
+    w->bodies.push_back(&w->simulator.registerObject(std::move(body)));
+    if (w == &world) part = &tip;
+  }
+  const std::uint64_t hash = scenes::stateHash(world.simulator);
+  part = static_cast<Circle*>(
+      world.simulator.objects[world.simulator.objects.size() - 1].primitives()[0]);
+  EXPECT_EQ(thrownField([&] { world.simulator.registerObject(std::unique_ptr<Circle>(part)); }),
+            "World.registerObject.object");
+  EXPECT_EQ(scenes::stateHash(world.simulator), hash);
+  EXPECT_EQ(part->radius(), real(0.25)) << "the part must still be alive";
+  for (int i = 0; i < 50; ++i) {
+    world.step();
+    reference.step();
+  }
+  EXPECT_NE(scenes::stateHash(reference.simulator), hash);
+  EXPECT_EQ(scenes::stateHash(world.simulator), scenes::stateHash(reference.simulator));
+}
+
+TEST(ValidationTest, RegisteredObjectsKnowTheirWorld) {
+  TestWorld world;
+  TestWorld other;
+  for (const PhysicalObject* body : world.bodies)
+    EXPECT_EQ(body->registeredWith(), &world.simulator);
+  EXPECT_EQ(other.bodies[0]->registeredWith(), &other.simulator);
+  const Circle unregistered(1, 1);
+  EXPECT_EQ(unregistered.registeredWith(), nullptr);
+  EXPECT_EQ(unregistered.ownedElsewhere(), nullptr);
+  EXPECT_NE(world.bodies[0]->ownedElsewhere(), nullptr);
+}
 
 TEST(ValidationTest, RefusedDragKeepsTheCurrentDrag) {
   // Two identical worlds dragging the same body; one is also sent bad drag requests.
