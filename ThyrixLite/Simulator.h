@@ -71,6 +71,9 @@ class Simulator : public World {
   ContactList contacts;
 
   /// Advances the world by one time step: the eight phases, then World::advanceTime().
+  /// @throws InvalidArgument naming the field ("Circle.externalForce", say) and, in the
+  /// message, the object's index, if checkInputs is set and an object's `r`, `alpha`,
+  /// `externalForce` or `externalTorque` is not finite; the world is then left as it was.
   void advanceTime() override;
 
   /// Replaces the integrator that moves the objects in phase 8 (explicit Euler, Integrator
@@ -84,6 +87,11 @@ class Simulator : public World {
   [[nodiscard]] Integrator& integrator() { return *integrator_; }
   /// The integrator of phase 8, read-only.
   [[nodiscard]] const Integrator& integrator() const { return *integrator_; }
+
+  /// Whether advanceTime() first checks that every object's `r`, `alpha`, `externalForce` and
+  /// `externalTorque` are finite (values written between steps), so that a NaN is refused
+  /// instead of spreading. On by default in Debug builds of Thyrix, off in Release.
+  bool checkInputs;
 
   /// Phase 1: erases the last step's contacts (kept until now so a GUI can draw them).
   void eraseContacts();
@@ -453,6 +461,8 @@ class Simulator : public World {
   [[nodiscard]] static bool immovable(const SolverBody& body) {
     return body.inverseMass == 0 && body.inverseInertia == 0;
   }
+  /// Throws InvalidArgument for the first object whose pose or accumulators are not finite.
+  void checkFinite() const;
 
   std::unique_ptr<Integrator> integrator_;  // never null
   bool eulerIntegrator_ = true;             // integrator_ is exactly Integrator: its fast loop

@@ -329,6 +329,74 @@ TEST(ValidationTest, RegisteredObjectsKnowTheirWorld) {
   EXPECT_NE(world.bodies[0]->ownedElsewhere(), nullptr);
 }
 
+TEST(ValidationTest, NonFiniteValuesWrittenBetweenStepsAreRefusedBeforeTheStep) {
+  // Each field of each body, NaN or infinite, written between steps: the next step throws
+  // naming the field and the object's index, and leaves the world as it was; once the value
+  // is repaired, the world goes on exactly as one that never saw it.
+  struct Field {
+    const char* name;
+    real* (*at)(PhysicalObject&);
+  };
+  const Field fields[] = {
+      {"r", [](PhysicalObject& o) { return &o.r.x; }},
+      {"r", [](PhysicalObject& o) { return &o.r.y; }},
+      {"alpha", [](PhysicalObject& o) { return &o.alpha; }},
+      {"externalForce", [](PhysicalObject& o) { return &o.externalForce.x; }},
+      {"externalForce", [](PhysicalObject& o) { return &o.externalForce.y; }},
+      {"externalTorque", [](PhysicalObject& o) { return &o.externalTorque; }},
+  };
+  for (const Field& field : fields) {
+    for (std::size_t body = 0; body < 3; ++body) {
+      for (const real bad : {kNaN, kInf, -kInf}) {
+        SCOPED_TRACE(std::string(field.name) + " of body " + std::to_string(body) + " = " +
+                     std::to_string(bad));
+        TestWorld world;
+        TestWorld reference;
+        world.simulator.checkInputs = true;
+        for (int i = 0; i < 5; ++i) {
+          world.step();
+          reference.step();
+        }
+        PhysicalObject& object = *world.bodies[body];
+        const std::size_t index = 2 + body;  // after the two borders
+        ASSERT_EQ(&world.simulator.objects[index], &object);
+        const std::uint64_t hash = scenes::stateHash(world.simulator);
+        const std::size_t contacts = world.simulator.contacts.size();
+        real* value = field.at(object);
+        const real good = *value;
+        *value = bad;
+        try {
+          world.simulator.advanceTime();
+          ADD_FAILURE() << "no exception";
+        } catch (const InvalidArgument& error) {
+          EXPECT_EQ(error.field(), object.typeName() + "." + field.name);
+          EXPECT_NE(std::string(error.what()).find("objects[" + std::to_string(index) + "]"),
+                    std::string::npos)
+              << error.what();
+        }
+        EXPECT_EQ(world.simulator.stepCount(), reference.simulator.stepCount());
+        EXPECT_EQ(world.simulator.contacts.size(), contacts);
+        *value = good;
+        EXPECT_EQ(scenes::stateHash(world.simulator), hash);
+        for (int i = 0; i < 20; ++i) {
+          world.step();
+          reference.step();
+        }
+        EXPECT_EQ(scenes::stateHash(world.simulator), scenes::stateHash(reference.simulator));
+      }
+    }
+  }
+}
+
+TEST(ValidationTest, InputCheckIsOnByDefaultInDebugBuilds) {
+  const Simulator simulator;
+#ifdef NDEBUG
+  EXPECT_FALSE(simulator.checkInputs);
+#else
+  EXPECT_TRUE(simulator.checkInputs);
+#endif
+}
+
 TEST(ValidationTest, RefusedDragKeepsTheCurrentDrag) {
   // Two identical worlds dragging the same body; one is also sent bad drag requests.
   TestWorld world;
