@@ -30,12 +30,8 @@ void PhysicalObject::validate() const {
   if (!std::isfinite(externalTorque))
     throw InvalidArgument(field("externalTorque"), "must be finite");
   if (!fixed) {
-    if (!(m > 0) || !std::isfinite(m))
-      throw InvalidArgument(field("m"),
-                            "must be positive and finite (got " + std::to_string(m) + ")");
-    if (!(I > 0) || !std::isfinite(I))
-      throw InvalidArgument(field("I"),
-                            "must be positive and finite (got " + std::to_string(I) + ")");
+    requireInvertible(m, field("m").c_str());
+    requireInvertible(I, field("I").c_str());
   }
 }
 

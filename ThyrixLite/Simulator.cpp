@@ -260,6 +260,8 @@ void Simulator::startDrag(PhysicalObject& object, Vector2 grabPoint) {
   if (std::none_of(objects.begin(), objects.end(),
                    [body](const PhysicalObject& o) { return &o == body; }))
     throw InvalidArgument("Simulator.startDrag.object", "is not registered with this simulator");
+  if (body->primitives().empty())  // an elastoid, say: drag one of its bodies instead
+    throw InvalidArgument("Simulator.startDrag.object", "has no shape of its own to grab");
   dragged_ = body;
   real smallest = realMax;
   for (const Primitive* primitive : body->primitives())

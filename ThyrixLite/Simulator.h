@@ -179,7 +179,8 @@ class Simulator : public World {
 
   /// Grabs @p object at @p grabPoint (world coordinates); a part grabs its whole body.
   /// @throws InvalidArgument naming "Simulator.startDrag.object" if the object is not in this
-  ///         world, or "Simulator.startDrag.grabPoint" if the point is not finite
+  ///         world or has no shape of its own (an Elastoid: drag one of its bodies), or
+  ///         "Simulator.startDrag.grabPoint" if the point is not finite
   void startDrag(PhysicalObject& object, Vector2 grabPoint);
   /// Moves the mouse target to @p target (world coordinates).
   /// @throws InvalidArgument naming "Simulator.dragTo.target" if it is not finite

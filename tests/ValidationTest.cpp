@@ -69,7 +69,35 @@ TEST(ValidationTest, CappedRectangleFields) {
   EXPECT_EQ(thrownField([] { CappedRectangle c(2, real(0.5), 3); }), "<no exception>");
 }
 
+TEST(ValidationTest, MassWhoseInverseOverflows) {
+  // The smallest subnormal: positive and finite, but 1 / m is infinite (in double and float).
+  const real tiny = std::numeric_limits<real>::denorm_min();
+  ASSERT_FALSE(std::isfinite(1 / tiny));
+  EXPECT_EQ(thrownField([&] { Circle c(1, tiny); }), "Circle.mass");
+  EXPECT_EQ(thrownField([&] { CappedRectangle c(1, 1, tiny); }), "CappedRectangle.mass");
+  // A mass set after construction, and a moment of inertia, are refused at registration.
+  Simulator simulator;
+  auto circle = std::make_unique<Circle>(1, 1);
+  circle->m = tiny;
+  EXPECT_EQ(thrownField([&] { simulator.registerObject(std::move(circle)); }), "Circle.m");
+  auto capsule = std::make_unique<CappedRectangle>(1, 1, 1);
+  capsule->I = tiny;
+  EXPECT_EQ(thrownField([&] { simulator.registerObject(std::move(capsule)); }),
+            "CappedRectangle.I");
+  EXPECT_EQ(simulator.objects.size(), 0u);
+}
+
 TEST(ValidationTest, BorderFields) {
+  // A normal of subnormal length (1e-310 in double, 1e-40 in float) is too short to normalize.
+  const real subnormal = std::numeric_limits<real>::min() / 4;
+  ASSERT_GT(subnormal, 0);
+  EXPECT_EQ(thrownField([&] { Border b({0, 0}, {subnormal, 0}); }), "Border.normal");
+  EXPECT_EQ(thrownField([&] { Border b({0, 0}, {0, -subnormal}); }), "Border.normal");
+  EXPECT_EQ(thrownField([&] { Border b({0, 0}, {subnormal, subnormal}); }), "Border.normal");
+  // The smallest normal length is accepted and gives a unit normal.
+  const Border smallest({0, 0}, {0, std::numeric_limits<real>::min()});
+  EXPECT_EQ(smallest.normal().x, 0);
+  EXPECT_EQ(smallest.normal().y, 1);
   EXPECT_EQ(thrownField([] { Border b({0, 0}, {0, 0}); }), "Border.normal");
   EXPECT_EQ(thrownField([] { Border b({0, 0}, {kNaN, 1}); }), "Border.normal");
   EXPECT_EQ(thrownField([] { Border b({0, 0}, {1, kNaN}); }), "Border.normal");
@@ -198,6 +226,17 @@ const std::vector<BadInput>& badInputs() {
        [](TestWorld& w) {
          TestWorld other;
          w.simulator.startDrag(*other.bodies[0], other.bodies[0]->r);
+       }},
+      {"StartDragObjectWithoutShape", "Simulator.startDrag.object",
+       [](TestWorld& w) {
+         // An elastoid has no shape of its own (its bodies have), so there is nothing to grab:
+         // registered in a world of its own, so that this one stays unchanged.
+         Simulator other;
+         auto elastoid = std::make_unique<Elastoid>();
+         elastoid->addBody(circleAt({3, 3}));
+         auto& registered = other.registerObject(std::move(elastoid));
+         other.startDrag(registered, {3, 3});
+         (void)w;
        }},
       {"StartDragGrabPointNaN", "Simulator.startDrag.grabPoint",
        [](TestWorld& w) {
