@@ -9,6 +9,9 @@ namespace {
 Vector2 checkedNormal(Vector2 normal) {
   requireFinite(normal, "Border.normal");
   if (!(normal.length() > 0)) throw InvalidArgument("Border.normal", "must not be the zero vector");
+  // A subnormal length has lost its precision (and its inverse may overflow): too short.
+  if (!(normal.length() >= std::numeric_limits<real>::min()))
+    throw InvalidArgument("Border.normal", "is too short to normalize (a subnormal length)");
   return normal.normalized();
 }
 }  // namespace

@@ -12,7 +12,7 @@ namespace thyrix {
 class Border : public Primitive {
  public:
   /// @throws InvalidArgument naming "Border.point" (non-finite) or "Border.normal"
-  ///         (zero or non-finite); the normal is normalized.
+  ///         (zero, of a subnormal length, or non-finite); the normal is normalized.
   Border(Vector2 point, Vector2 normal);
 
   /// The unit normal in world coordinates, into the simulation area.

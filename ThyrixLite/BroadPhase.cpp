@@ -112,7 +112,9 @@ Vector2 centreInCells(const BoundingBox& box, Real cellSize) {
     const __m128d q = _mm_div_pd(
         _mm_mul_pd(_mm_add_pd(_mm_loadu_pd(corners), _mm_loadu_pd(corners + 2)), _mm_set1_pd(0.5)),
         _mm_set1_pd(cellSize));
-    return {_mm_cvtsd_f64(q), _mm_cvtsd_f64(_mm_unpackhi_pd(q, q))};
+    // (The casts change nothing in double; clang checks this branch in a float build too.)
+    return {static_cast<real>(_mm_cvtsd_f64(q)),
+            static_cast<real>(_mm_cvtsd_f64(_mm_unpackhi_pd(q, q)))};
   }
 #endif
   return (box.lower + box.upper) * real(0.5) / cellSize;
@@ -151,12 +153,13 @@ void gatherExtents(std::span<const BoundingBox> boxes, SweepAndPrune::Extents& e
         most = _mm_max_sd(side, most);
       }
     }
-    extents.sumX = _mm_cvtsd_f64(sums);
-    extents.sumY = _mm_cvtsd_f64(_mm_unpackhi_pd(sums, sums));
-    extents.lowX = _mm_cvtsd_f64(low);
-    extents.lowY = _mm_cvtsd_f64(_mm_unpackhi_pd(low, low));
-    extents.highX = _mm_cvtsd_f64(high);
-    extents.highY = _mm_cvtsd_f64(_mm_unpackhi_pd(high, high));
+    // (The casts change nothing in double; clang checks this branch in a float build too.)
+    extents.sumX = static_cast<real>(_mm_cvtsd_f64(sums));
+    extents.sumY = static_cast<real>(_mm_cvtsd_f64(_mm_unpackhi_pd(sums, sums)));
+    extents.lowX = static_cast<real>(_mm_cvtsd_f64(low));
+    extents.lowY = static_cast<real>(_mm_cvtsd_f64(_mm_unpackhi_pd(low, low)));
+    extents.highX = static_cast<real>(_mm_cvtsd_f64(high));
+    extents.highY = static_cast<real>(_mm_cvtsd_f64(_mm_unpackhi_pd(high, high)));
     extentSum = _mm_cvtsd_f64(sum);
     maxExtent = _mm_cvtsd_f64(most);
     return;

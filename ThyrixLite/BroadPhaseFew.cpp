@@ -37,7 +37,7 @@ struct Sse;
 template <>
 struct Sse<double> {
   using Vector = __m128d;
-  static constexpr std::uint32_t lanes = 2;
+  [[maybe_unused]] static constexpr std::uint32_t lanes = 2;  // unused with the other real
   static Vector broadcast(double x) { return _mm_set1_pd(x); }
   static Vector load(const double* p) { return _mm_loadu_pd(p); }
   static Vector lessOrEqual(Vector a, Vector b) { return _mm_cmple_pd(a, b); }
@@ -47,7 +47,7 @@ struct Sse<double> {
 template <>
 struct Sse<float> {
   using Vector = __m128;
-  static constexpr std::uint32_t lanes = 4;
+  [[maybe_unused]] static constexpr std::uint32_t lanes = 4;  // unused with the other real
   static Vector broadcast(float x) { return _mm_set1_ps(x); }
   static Vector load(const float* p) { return _mm_loadu_ps(p); }
   static Vector lessOrEqual(Vector a, Vector b) { return _mm_cmple_ps(a, b); }

@@ -9,11 +9,15 @@ real checked(real value, const char* field) {
   requirePositive(value, field);
   return value;
 }
+real invertible(real value, const char* field) {
+  requireInvertible(value, field);
+  return value;
+}
 }  // namespace
 
 CappedRectangle::CappedRectangle(real l, real R, real mass)
     : Primitive(ShapeType::Capsule, checked(R, "CappedRectangle.R"),
-                checked(l, "CappedRectangle.l"), checked(mass, "CappedRectangle.mass"),
+                checked(l, "CappedRectangle.l"), invertible(mass, "CappedRectangle.mass"),
                 momentOfInertia(l, R, mass)) {}
 
 real CappedRectangle::momentOfInertia(real l, real R, real mass) {

@@ -18,6 +18,7 @@ class alignas(64) CappedRectangle : public Primitive {
   /// @param R half width (the caps' radius)
   /// @param mass quasistatic mass (N s/m)
   /// @throws InvalidArgument naming "CappedRectangle.l", ".R" or ".mass" unless positive and finite
+  /// (the mass with a finite inverse too)
   CappedRectangle(real l, real R, real mass);
 
   /// Moment of inertia of a uniform capsule about its centre.

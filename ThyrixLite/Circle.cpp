@@ -9,7 +9,7 @@ real checkedRadius(real radius) {
   return radius;
 }
 real checkedMass(real mass) {
-  requirePositive(mass, "Circle.mass");
+  requireInvertible(mass, "Circle.mass");
   return mass;
 }
 }  // namespace

@@ -10,6 +10,7 @@ namespace thyrix {
 class Circle : public Primitive {
  public:
   /// @throws InvalidArgument naming "Circle.radius" or "Circle.mass" unless positive and finite
+  /// (the mass with a finite inverse too)
   Circle(real radius, real mass);
 
   /// Puts @p count touch sensors around the circle, sensor 0 starting at body-frame angle

@@ -8,10 +8,12 @@ ComposedPhysicalObject::ComposedPhysicalObject() : PhysicalObject(0, 0) {}
 void ComposedPhysicalObject::addPart(std::unique_ptr<Primitive> part, Vector2 relativePosition,
                                      real relativeAngle) {
   if (!part) throw InvalidArgument("ComposedPhysicalObject.part", "must not be null");
+  if (const char* problem = part->ownedElsewhere()) {
+    (void)part.release();  // its owner keeps it: the refusal must not destroy it
+    throw InvalidArgument("ComposedPhysicalObject.part", problem);
+  }
   if (part->shapeType() == ShapeType::HalfPlane)
     throw InvalidArgument("ComposedPhysicalObject.part", "cannot be a Border");
-  if (&part->owner() != part.get())
-    throw InvalidArgument("ComposedPhysicalObject.part", "is already part of a body");
   requireFinite(relativePosition, "ComposedPhysicalObject.relativePosition");
   requireFinite(relativeAngle, "ComposedPhysicalObject.relativeAngle");
   parts_.reserve(parts_.size() + 1);  // so nothing below can fail half-way

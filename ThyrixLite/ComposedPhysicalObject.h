@@ -23,8 +23,9 @@ class ComposedPhysicalObject : public PhysicalObject {
 
   /// Adds @p part at @p relativePosition and @p relativeAngle in the body's frame and returns
   /// it. @throws InvalidArgument naming "ComposedPhysicalObject.part" (null, a border, or
-  /// already part of a body), ".relativePosition" or ".relativeAngle" (not finite); the body
-  /// is then unchanged.
+  /// owned elsewhere: a part of a body, registered, a sub-body; PhysicalObject::ownedElsewhere),
+  /// ".relativePosition" or ".relativeAngle" (not finite); the body is then unchanged, and a
+  /// part owned elsewhere is left to its owner, not destroyed.
   template <class T>
   T& add(std::unique_ptr<T> part, Vector2 relativePosition, real relativeAngle = 0) {
     T* added = part.get();  // not dereferenced before addPart has refused a null part

@@ -5,6 +5,8 @@
 #include <ThyrixLite/ThyrixParameters.h>
 #include <ThyrixLite/Vector2.h>
 
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -43,6 +45,17 @@ inline void requireFinite(Vector2 value, const char* field) {
 inline void requirePositive(real value, const char* field) {
   if (!(value > 0) || !std::isfinite(value))
     throw InvalidArgument(field, "must be positive and finite (got " + std::to_string(value) + ")");
+}
+
+/// Throws InvalidArgument naming @p field unless @p value is positive, finite and so is its
+/// inverse (a mass or moment of inertia, which the solvers divide by).
+inline void requireInvertible(real value, const char* field) {
+  requirePositive(value, field);
+  if (!std::isfinite(1 / value)) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", static_cast<double>(value));
+    throw InvalidArgument(field, std::string("must have a finite inverse (got ") + text + ")");
+  }
 }
 
 }  // namespace thyrix

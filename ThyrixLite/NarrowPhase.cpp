@@ -90,9 +90,17 @@ Manifold collideCapsules(Vector2 a0, Vector2 a1, real ra, Vector2 b0, Vector2 b1
   // Closest points of the two axes (segments), after Ericson, Real-Time Collision Detection 5.1.9.
   const Vector2 dA = a1 - a0;
   const Vector2 dB = b1 - b0;
-  const Vector2 w = a0 - b0;
   const real a = dA.lengthSquared();
   const real e = dB.lengthSquared();
+  // An axis that collapsed to a point (a tiny half length, or one lost to rounding far from the
+  // origin) is a circle: the segment formulas below divide by its squared length.
+  if (!(a > 0)) return collideCircleCapsule(a0, ra, b0, b1, rb, margin);
+  if (!(e > 0)) {
+    Manifold m = collideCircleCapsule(b0, rb, a0, a1, ra, margin);
+    m.normal = -m.normal;  // from A to B; the depth and the midpoint do not depend on the side
+    return m;
+  }
+  const Vector2 w = a0 - b0;
   const real f = dot(dB, w);
   const real c = dot(dA, w);
   const real b = dot(dA, dB);

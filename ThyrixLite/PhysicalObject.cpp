@@ -1,5 +1,6 @@
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixLite/PhysicalObject.h>
+#include <ThyrixLite/Primitive.h>
 #include <ThyrixLite/VisualSensor.h>
 
 namespace thyrix {
@@ -29,13 +30,35 @@ void PhysicalObject::validate() const {
   if (!std::isfinite(externalTorque))
     throw InvalidArgument(field("externalTorque"), "must be finite");
   if (!fixed) {
-    if (!(m > 0) || !std::isfinite(m))
-      throw InvalidArgument(field("m"),
-                            "must be positive and finite (got " + std::to_string(m) + ")");
-    if (!(I > 0) || !std::isfinite(I))
-      throw InvalidArgument(field("I"),
-                            "must be positive and finite (got " + std::to_string(I) + ")");
+    requireInvertible(m, field("m").c_str());
+    requireInvertible(I, field("I").c_str());
   }
+}
+
+const char* PhysicalObject::ownedElsewhere() const {
+  if (world_ != nullptr) return "is already registered with a world";
+  if (carrier_ != nullptr) return "is a sub-body of another object, which registers it";
+  for (const Primitive* primitive : primitives_) {
+    if (primitive == this && &primitive->owner() != this)
+      return "is a part of another body: register the body, not its part";
+  }
+  return nullptr;
+}
+
+void PhysicalObject::adoptSubBody(std::unique_ptr<PhysicalObject> body) {
+  const char* field = "PhysicalObject.addSubBody.body";
+  if (!body) throw InvalidArgument(field, "must not be null");
+  if (body.get() == this) {
+    (void)body.release();  // this object's own pointer: the refusal must not destroy it
+    throw InvalidArgument(field, "must be another object than this one");
+  }
+  if (const char* problem = body->ownedElsewhere()) {
+    (void)body.release();  // its owner keeps it: the refusal must not destroy it
+    throw InvalidArgument(field, problem);
+  }
+  subBodies_.reserve(subBodies_.size() + 1);  // nothing below fails
+  body->carrier_ = this;
+  subBodies_.push_back(std::move(body));
 }
 
 void PhysicalObject::applyForce(Vector2 force, Vector2 worldPoint) {

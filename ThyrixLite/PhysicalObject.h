@@ -142,6 +142,12 @@ class PhysicalObject : public GraphicalObject {
   /// The collision geometry of this body.
   [[nodiscard]] std::span<Primitive* const> primitives() const { return primitives_; }
 
+  /// The world this object is registered with, or nullptr before registration.
+  [[nodiscard]] const World* registeredWith() const { return world_; }
+  /// Why this object cannot be handed to a new owner: it is registered with a world, a
+  /// sub-body of another object, or a part of another body; nullptr when it is free.
+  [[nodiscard]] const char* ownedElsewhere() const;
+
   /// 1 / m, or 0 for a fixed body.
   [[nodiscard]] real inverseMass() const { return fixed ? real(0) : 1 / m; }
   /// 1 / I, or 0 for a fixed body.
@@ -170,11 +176,13 @@ class PhysicalObject : public GraphicalObject {
 
   /// Hands @p body to this object until registration, when the world registers it right
   /// after this object and takes ownership (how an agent brings its several bodies along).
+  /// @throws InvalidArgument naming "PhysicalObject.addSubBody.body" if it is null or owned
+  /// elsewhere (ownedElsewhere()); such a body is then left to its owner, not destroyed.
   template <class T>
   T& addSubBody(std::unique_ptr<T> body) {
-    T& added = *body;
-    subBodies_.push_back(std::move(body));
-    return added;
+    T* added = body.get();
+    adoptSubBody(std::unique_ptr<PhysicalObject>(std::move(body)));
+    return *added;
   }
 
   /// Called once the object is registered with @p simulator (agents that need the time step
@@ -236,11 +244,16 @@ class PhysicalObject : public GraphicalObject {
     externalTorque = 0;
   }
 
+  void adoptSubBody(std::unique_ptr<PhysicalObject> body);
+
   friend class World;
   friend class Simulator;
   friend class Primitive;  // keeps sensing_, rigid_ and the direction cache
   std::vector<Primitive*> primitives_;
   std::vector<std::unique_ptr<PhysicalObject>> subBodies_;  // handed to the world on registration
+  // Who owns this object besides the unique_ptr it came in, so that a second owner is refused.
+  const World* world_ = nullptr;             // the world it is registered with
+  const PhysicalObject* carrier_ = nullptr;  // the object whose sub-body it is, until registered
 };
 
 }  // namespace thyrix

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <typeinfo>
 
 namespace thyrix {
@@ -33,8 +34,16 @@ bool hasDefaultHooks(const PhysicalObject& object) {
 
 }  // namespace
 
+#ifdef NDEBUG
+constexpr bool checkInputsByDefault = false;
+#else
+constexpr bool checkInputsByDefault = true;
+#endif
+
 Simulator::Simulator(real timestep)
-    : World(timestep), integrator_(std::make_unique<Integrator>()) {}
+    : World(timestep),
+      checkInputs(checkInputsByDefault),
+      integrator_(std::make_unique<Integrator>()) {}
 
 void Simulator::setIntegrator(std::unique_ptr<Integrator> integrator) {
   if (!integrator) throw InvalidArgument("Simulator.setIntegrator.integrator", "must not be null");
@@ -160,6 +169,7 @@ void Simulator::reserveContacts(std::size_t count) {
 }
 
 void Simulator::advanceTime() {
+  if (checkInputs) checkFinite();
   eraseContacts();
   detectContacts();
   // With core shapes only (no object's own hooks, no articulated agent), nothing reads the
@@ -187,6 +197,34 @@ void Simulator::advanceTime() {
   else
     integrator_->integrate(*this, timestep());
   World::advanceTime();
+}
+
+void Simulator::checkFinite() const {
+  // x * 0 is 0 for a finite x and NaN for an infinite or NaN one: one sum tells whether a
+  // field is not finite (or two finite ones overflowed: then the search below finds none).
+  real zero = 0;
+  for (const PhysicalObject& object : objects)
+    zero += (object.r.x + object.r.y + object.alpha + object.externalForce.x +
+             object.externalForce.y + object.externalTorque) *
+            0;
+  if (zero == 0) [[likely]]
+    return;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const PhysicalObject& object = objects[i];
+    const std::string where = " of objects[" + std::to_string(i) + "]";
+    const auto check = [&](const char* name, real value) {
+      if (!std::isfinite(value))
+        throw InvalidArgument(object.typeName() + "." + name,
+                              where + " must be finite (got " + std::to_string(value) +
+                                  "): set between steps, refused before the step");
+    };
+    check("r", object.r.x);
+    check("r", object.r.y);
+    check("alpha", object.alpha);
+    check("externalForce", object.externalForce.x);
+    check("externalForce", object.externalForce.y);
+    check("externalTorque", object.externalTorque);
+  }
 }
 
 void Simulator::computeDerivativesInGravity() {
@@ -230,6 +268,8 @@ void Simulator::startDrag(PhysicalObject& object, Vector2 grabPoint) {
   if (std::none_of(objects.begin(), objects.end(),
                    [body](const PhysicalObject& o) { return &o == body; }))
     throw InvalidArgument("Simulator.startDrag.object", "is not registered with this simulator");
+  if (body->primitives().empty())  // an elastoid, say: drag one of its bodies instead
+    throw InvalidArgument("Simulator.startDrag.object", "has no shape of its own to grab");
   dragged_ = body;
   real smallest = realMax;
   for (const Primitive* primitive : body->primitives())

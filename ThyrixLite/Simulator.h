@@ -82,6 +82,9 @@ class Simulator : public World {
   ContactList contacts;
 
   /// Advances the world by one time step: the eight phases, then World::advanceTime().
+  /// @throws InvalidArgument naming the field ("Circle.externalForce", say) and, in the
+  /// message, the object's index, if checkInputs is set and an object's `r`, `alpha`,
+  /// `externalForce` or `externalTorque` is not finite; the world is then left as it was.
   void advanceTime() override;
 
   /// Replaces the integrator that moves the objects in phase 8 (explicit Euler, Integrator
@@ -95,6 +98,11 @@ class Simulator : public World {
   [[nodiscard]] Integrator& integrator() { return *integrator_; }
   /// The integrator of phase 8, read-only.
   [[nodiscard]] const Integrator& integrator() const { return *integrator_; }
+
+  /// Whether advanceTime() first checks that every object's `r`, `alpha`, `externalForce` and
+  /// `externalTorque` are finite (values written between steps), so that a NaN is refused
+  /// instead of spreading. On by default in Debug builds of Thyrix, off in Release.
+  bool checkInputs;
 
   /// Phase 1: erases the last step's contacts (kept until now so a GUI can draw them).
   void eraseContacts();
@@ -182,7 +190,8 @@ class Simulator : public World {
 
   /// Grabs @p object at @p grabPoint (world coordinates); a part grabs its whole body.
   /// @throws InvalidArgument naming "Simulator.startDrag.object" if the object is not in this
-  ///         world, or "Simulator.startDrag.grabPoint" if the point is not finite
+  ///         world or has no shape of its own (an Elastoid: drag one of its bodies), or
+  ///         "Simulator.startDrag.grabPoint" if the point is not finite
   void startDrag(PhysicalObject& object, Vector2 grabPoint);
   /// Moves the mouse target to @p target (world coordinates).
   /// @throws InvalidArgument naming "Simulator.dragTo.target" if it is not finite
@@ -473,6 +482,8 @@ class Simulator : public World {
   [[nodiscard]] static bool immovable(const SolverBody& body) {
     return body.inverseMass == 0 && body.inverseInertia == 0;
   }
+  /// Throws InvalidArgument for the first object whose pose or accumulators are not finite.
+  void checkFinite() const;
 
   std::unique_ptr<Integrator> integrator_;  // never null
   bool eulerIntegrator_ = true;             // integrator_ is exactly Integrator: its fast loop

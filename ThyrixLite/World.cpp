@@ -35,7 +35,17 @@ void validateForRegistration(const PhysicalObject& object) {
 }  // namespace
 
 void World::adopt(std::unique_ptr<PhysicalObject> object) {
-  if (!object) throw InvalidArgument("World.registerObject.object", "must not be null");
+  const char* field = "World.registerObject.object";
+  if (!object) throw InvalidArgument(field, "must not be null");
+  // An object owned elsewhere came in a second unique_ptr: refusing it must not destroy it.
+  if (object->world_ == this) {
+    (void)object.release();
+    throw InvalidArgument(field, "is already registered with this world");
+  }
+  if (const char* problem = object->ownedElsewhere()) {
+    (void)object.release();
+    throw InvalidArgument(field, problem);
+  }
   // Everything is checked and prepared before anything is added: all or nothing.
   validateForRegistration(*object);
   for (const auto& body : object->subBodies_) validateForRegistration(*body);
@@ -48,9 +58,12 @@ void World::adopt(std::unique_ptr<PhysicalObject> object) {
 
   // The object comes first, so its phase hooks run before its sub-bodies' in every step.
   std::vector<std::unique_ptr<PhysicalObject>> subBodies = std::move(object->subBodies_);
+  object->world_ = this;
   objects.items_.push_back(std::move(object));
   completeRegistration(*objects.items_.back(), index);
   for (auto& body : subBodies) {
+    body->world_ = this;
+    body->carrier_ = nullptr;
     objects.items_.push_back(std::move(body));
     completeRegistration(*objects.items_.back(), objects.items_.size() - 1);
   }

@@ -54,10 +54,13 @@ class World {
   /// Takes ownership of @p object and returns it, typed as given.
   ///
   /// The object is validated first (sizes, masses, finite position and angle); on failure an
-  /// InvalidArgument names the field and the world is left unchanged. An agent's sub-bodies
-  /// (PhysicalObject::addSubBody) are registered right after it, all or nothing. Register
-  /// between steps, not from an object's hooks during one: the step walks `objects` as it was
-  /// when the step began.
+  /// InvalidArgument names the field and the world is left unchanged. An object owned
+  /// elsewhere (registered with this or another world, a part of a body, a sub-body of
+  /// another object: PhysicalObject::ownedElsewhere) is refused naming
+  /// "World.registerObject.object" and left to its owner: @p object only releases it. An agent's
+  /// sub-bodies (PhysicalObject::addSubBody) are registered right after it, all or nothing.
+  /// Register between steps, not from an object's hooks during one: the step walks `objects` as it
+  /// was when the step began.
   template <std::derived_from<PhysicalObject> T>
   T& registerObject(std::unique_ptr<T> object) {
     T* added = object.get();

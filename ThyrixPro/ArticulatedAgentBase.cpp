@@ -352,17 +352,25 @@ void ArticulatedAgentBase::addKeptLinkWeight() {
 }
 
 void ArticulatedAgentBase::refuseLinkForce(int b, Vector2 force, Vector2 worldPoint) const {
-  if (b < base || b >= linkCount())
-    throw InvalidArgument(
-        "ArticulatedAgentBase.body",
-        "must be in [-1, " + std::to_string(linkCount()) + ") (got " + std::to_string(b) + ")");
+  checkBody(b);
   requireFinite(force, "ArticulatedAgentBase.force");
   requireFinite(worldPoint, "ArticulatedAgentBase.worldPoint");
 }
 
 // --- proprioception --------------------------------------------------------------------------
 
+void ArticulatedAgentBase::checkBody(int b) const {
+  if (b < base || b >= linkCount())
+    throw InvalidArgument(
+        "ArticulatedAgentBase.body",
+        "must be in [-1, " + std::to_string(linkCount()) + ") (got " + std::to_string(b) + ")");
+}
+
 LinkContactInfo ArticulatedAgentBase::linkContact(std::size_t k) const {
+  if (k >= contacts.size())
+    throw InvalidArgument("ArticulatedAgentBase.linkContact.k",
+                          "must be below the " + std::to_string(contacts.size()) +
+                              " contacts of this step (got " + std::to_string(k) + ")");
   LinkContactInfo info;
   static_cast<ContactInfo&>(info) = contacts[k];
   info.body = bodyOf(*info.primitive);
@@ -409,6 +417,7 @@ std::span<const LinkContactInfo> ArticulatedAgentBase::linkContacts(int b) {
 }
 
 real ArticulatedAgentBase::contactForceOn(int b) const {
+  checkBody(b);
   real sum = 0;
   for (const ContactInfo& c : contacts)
     if (bodyOf(*c.primitive) == b) sum += c.force;

@@ -76,6 +76,8 @@ struct ArticulatedBasePart {
 ///
 /// **Proprioception:** jointAngle(), jointRate(), the poses and velocities of every body, the
 /// last limit torques, and each body's contact list, joint limits included (linkContacts()).
+/// Like the setters, every accessor checks its index: InvalidArgument naming
+/// "ArticulatedAgentBase.joint", ".body" or ".linkContact.k".
 ///
 /// **Contacts.** Every shape collides with other objects. Two of the agent's own bodies collide
 /// unless they are neighbours (selfCollides()). The base's parts never collide with each other.
@@ -96,7 +98,7 @@ class ArticulatedAgentBase : public MultiBodyObject {
   /// The articulated body: the tree, its state and the algorithm (read-only).
   [[nodiscard]] const ArticulatedBody& articulatedBody() const { return body_; }
   /// The capsule of link @p i: set its colours or tactile sensors here.
-  [[nodiscard]] CappedRectangle& linkShape(int i) const { return *linkShapes_[index(i)]; }
+  [[nodiscard]] CappedRectangle& linkShape(int i) const { return *linkShapes_[joint(i)]; }
   /// The number of the base's parts.
   [[nodiscard]] std::size_t basePartCount() const { return baseParts_.size(); }
   /// Part @p k of the base, in the order given: a Circle or a CappedRectangle.
@@ -127,7 +129,7 @@ class ArticulatedAgentBase : public MultiBodyObject {
   /// @throws InvalidArgument naming "ArticulatedAgentBase.joint" or ".jointTorque" (not finite)
   void setJointTorque(int i, real torque);
   /// The torque set on joint @p i (N m), without the servo's.
-  [[nodiscard]] real jointTorque(int i) const { return jointTorques_[index(i)]; }
+  [[nodiscard]] real jointTorque(int i) const { return jointTorques_[joint(i)]; }
   /// Sets every joint torque to zero.
   void clearJointTorques();
 
@@ -142,14 +144,14 @@ class ArticulatedAgentBase : public MultiBodyObject {
   /// "ArticulatedAgentBase.joint"
   void clearServo(int i);
   /// Whether joint @p i has a servo.
-  [[nodiscard]] bool hasServo(int i) const { return servoGains_[index(i)] > 0; }
+  [[nodiscard]] bool hasServo(int i) const { return servoGains_[joint(i)] > 0; }
   /// The servo target of joint @p i (rad); meaningful when hasServo().
-  [[nodiscard]] real servoTarget(int i) const { return servoTargets_[index(i)]; }
+  [[nodiscard]] real servoTarget(int i) const { return servoTargets_[joint(i)]; }
   /// The servo gain of joint @p i (N m/rad), 0 without a servo.
-  [[nodiscard]] real servoGain(int i) const { return servoGains_[index(i)]; }
+  [[nodiscard]] real servoGain(int i) const { return servoGains_[joint(i)]; }
   /// The torque the servo of joint @p i applied in the last step (N m), with the final rate:
   /// `gain (target - q - dt qdot)`, q the angle at the start of the step; 0 without a servo.
-  [[nodiscard]] real servoTorque(int i) const { return servoTorques_[index(i)]; }
+  [[nodiscard]] real servoTorque(int i) const { return servoTorques_[joint(i)]; }
 
   /// Adds the world force @p force (N) applied at the world point @p worldPoint on body @p b
   /// (-1 the base, else a link) for the next step; reset after it, like `externalForce`.
@@ -196,32 +198,51 @@ class ArticulatedAgentBase : public MultiBodyObject {
   // --- proprioception and poses --------------------------------------------------------------
 
   /// The angle of joint @p i (rad), not wrapped.
-  [[nodiscard]] real jointAngle(int i) const { return body_.jointAngle(i); }
+  [[nodiscard]] real jointAngle(int i) const { return body_.jointAngles()[joint(i)]; }
   /// All joint angles (rad).
   [[nodiscard]] std::span<const real> jointAngles() const { return body_.jointAngles(); }
   /// The rate of joint @p i in the last step (rad/s), contact forces and limits included.
-  [[nodiscard]] real jointRate(int i) const { return velocities_.jointRate(i); }
+  [[nodiscard]] real jointRate(int i) const { return velocities_.jointRates[joint(i)]; }
   /// The world position of the joint of link @p i (m).
-  [[nodiscard]] Vector2 jointPosition(int i) const { return body_.origin(i); }
+  [[nodiscard]] Vector2 jointPosition(int i) const {
+    checkJoint(i);
+    return body_.origin(i);
+  }
   /// The world position of the tip of link @p i (m).
-  [[nodiscard]] Vector2 linkTip(int i) const { return body_.tip(i); }
+  [[nodiscard]] Vector2 linkTip(int i) const {
+    checkJoint(i);
+    return body_.tip(i);
+  }
   /// The world position of body @p b's centre of mass (m).
-  [[nodiscard]] Vector2 centerOfMass(int b) const { return body_.centerOfMass(b); }
+  [[nodiscard]] Vector2 centerOfMass(int b) const {
+    checkBody(b);
+    return body_.centerOfMass(b);
+  }
   /// The world angle of body @p b's axis (rad): the base's angle, or a link's direction.
-  [[nodiscard]] real bodyAngle(int b) const { return body_.angle(b); }
+  [[nodiscard]] real bodyAngle(int b) const {
+    checkBody(b);
+    return body_.angle(b);
+  }
   /// The velocity of body @p b's centre of mass in the last step (m/s).
-  [[nodiscard]] Vector2 bodyVelocity(int b) const { return velocities_.linearVelocity(b); }
+  [[nodiscard]] Vector2 bodyVelocity(int b) const {
+    checkBody(b);
+    return velocities_.linearVelocity(b);
+  }
   /// The angular velocity of body @p b in the last step (rad/s).
-  [[nodiscard]] real bodyAngularVelocity(int b) const { return velocities_.angularVelocity(b); }
+  [[nodiscard]] real bodyAngularVelocity(int b) const {
+    checkBody(b);
+    return velocities_.angularVelocity(b);
+  }
   /// The velocity of the material point of body @p b at the world point @p point in the last
   /// step (m/s).
   [[nodiscard]] Vector2 pointVelocity(int b, Vector2 point) const {
+    checkBody(b);
     return body_.pointVelocity(velocities_, b, point);
   }
   /// The torque the limits of joint @p i applied in the last step (N m): positive at the lower
   /// limit, negative at the upper, zero when neither acted. Its magnitude is the limit's LCP
   /// multiplier, never negative.
-  [[nodiscard]] real limitTorque(int i) const { return limitTorques_[index(i)]; }
+  [[nodiscard]] real limitTorque(int i) const { return limitTorques_[joint(i)]; }
 
   /// Contact @p k of this step's `contacts`, with the body it touches, its `p` relative to that
   /// body's centre of mass.
@@ -307,6 +328,14 @@ class ArticulatedAgentBase : public MultiBodyObject {
   [[nodiscard]] static std::size_t index(int i) { return static_cast<std::size_t>(i); }
   /// Throws InvalidArgument naming "ArticulatedAgentBase.joint" unless @p i is a joint.
   void checkJoint(int i) const;
+  /// `i` as an index, once checkJoint() has accepted it (the getters' check).
+  [[nodiscard]] std::size_t joint(int i) const {
+    checkJoint(i);
+    return index(i);
+  }
+  /// Throws InvalidArgument naming "ArticulatedAgentBase.body" unless @p b is -1 (the base) or
+  /// a link.
+  void checkBody(int b) const;
 
   ArticulatedBody body_;  ///< the tree, its state and the algorithm
   /// The velocities of the last step (those without contacts until the contacts are solved).

@@ -47,7 +47,7 @@ void ArticulatedAgentQuasistatic::computeDerivativesWithoutContacts() {
       const std::size_t j = index(i);
       const real gain = servoGains_[j];
       torques_[j] = jointTorques_[j];
-      if (gain > 0) torques_[j] += gain * (servoTargets_[j] - body_.jointAngle(i));
+      if (gain > 0) torques_[j] += gain * (servoTargets_[j] - body_.jointAngles()[j]);
     }
     torques = torques_;
   }
@@ -152,8 +152,8 @@ void ArticulatedAgentQuasistatic::applyConstraintForces(std::span<const UnitForc
 void ArticulatedAgentQuasistatic::collectInternalConstraints(real dt,
                                                              std::vector<InternalConstraint>& out) {
   for (const int i : limitedJoints_) {
-    const ArticulatedLink& link = body_.link(i);
-    const real q = body_.jointAngle(i);
+    const ArticulatedLink& link = body_.links()[index(i)];
+    const real q = body_.jointAngles()[index(i)];
     // How far the joint may turn this step toward each limit: by its free rate, or by its last
     // step's rate (contacts may keep driving it, and their forces are not known yet), plus the
     // margin. A row that turns out not to be needed costs one LCP row and gets no torque.
@@ -172,8 +172,8 @@ void ArticulatedAgentQuasistatic::integrate(real dt) {
   if (servoCount_ > 0 || servoTorquesSet_) {
     for (int i = 0; i < linkCount(); ++i) {
       const std::size_t j = index(i);
-      servoTorques_[j] =
-          servoGains_[j] * (servoTargets_[j] - body_.jointAngle(i) - dt * velocities_.jointRate(i));
+      servoTorques_[j] = servoGains_[j] * (servoTargets_[j] - body_.jointAngles()[j] -
+                                           dt * velocities_.jointRates[j]);
     }
     servoTorquesSet_ = servoCount_ > 0;
   }

@@ -115,6 +115,12 @@ void ArticulatedBody::setBasePose(Vector2 position, real angle) {
   forwardKinematics();
 }
 
+void ArticulatedBody::refuseLink(int i) const {
+  throw InvalidArgument(
+      "ArticulatedBody.link",
+      "index must be in [0, " + std::to_string(linkCount()) + ") (got " + std::to_string(i) + ")");
+}
+
 void ArticulatedBody::setJointAngle(int i, real q) {
   if (i < 0 || i >= linkCount())
     throw InvalidArgument("ArticulatedBody.q", "index must be in [0, " +

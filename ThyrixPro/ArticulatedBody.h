@@ -142,8 +142,8 @@ class ArticulatedBody {
   [[nodiscard]] int linkCount() const { return static_cast<int>(q_.size()); }
   /// The links, in index order.
   [[nodiscard]] std::span<const ArticulatedLink> links() const { return links_; }
-  /// Link @p i.
-  [[nodiscard]] const ArticulatedLink& link(int i) const { return links_[i]; }
+  /// Link @p i. @throws InvalidArgument naming "ArticulatedBody.link" unless @p i is a link.
+  [[nodiscard]] const ArticulatedLink& link(int i) const { return links_[checked(i)]; }
   /// The parent of body @p b (-1 for a link on the base; the base has none and gives -2).
   [[nodiscard]] int parent(int b) const { return b == base ? base - 1 : links_[b].parent; }
   /// The quasistatic mass of body @p b (-1 the base).
@@ -159,7 +159,8 @@ class ArticulatedBody {
 
   /// The damping `c_i` of joint @p i (N m s/rad): the joint feels the torque `-c_i qdot_i`,
   /// solved implicitly. Zero by default.
-  [[nodiscard]] real jointDamping(int i) const { return jointDamping_[i]; }
+  /// @throws InvalidArgument naming "ArticulatedBody.link" unless @p i is a joint.
+  [[nodiscard]] real jointDamping(int i) const { return jointDamping_[checked(i)]; }
   /// Sets the damping of joint @p i to @p damping (N m s/rad). The articulated inertias depend
   /// on it, so a change makes the next solve() or respond() recompute them; setting the same
   /// value again costs nothing.
@@ -176,7 +177,8 @@ class ArticulatedBody {
   /// The joint angles q (rad), one per link.
   [[nodiscard]] std::span<const real> jointAngles() const { return q_; }
   /// The angle of joint @p i (rad).
-  [[nodiscard]] real jointAngle(int i) const { return q_[i]; }
+  /// @throws InvalidArgument naming "ArticulatedBody.link" unless @p i is a joint.
+  [[nodiscard]] real jointAngle(int i) const { return q_[checked(i)]; }
 
   // Every setter below recomputes the kinematics (O(N)), so the pose accessors are always
   // current; the articulated inertias are recomputed lazily by the next solve() or respond().
@@ -230,7 +232,8 @@ class ArticulatedBody {
     return origin_[b + 1] + Vector2{a.x * local.x - a.y * local.y, a.y * local.x + a.x * local.y};
   }
   /// The world position of link @p i's tip, `toWorld(i, link(i).tip())` (m).
-  [[nodiscard]] Vector2 tip(int i) const { return toWorld(i, links_[i].tip()); }
+  /// @throws InvalidArgument naming "ArticulatedBody.link" unless @p i is a link.
+  [[nodiscard]] Vector2 tip(int i) const { return toWorld(i, links_[checked(i)].tip()); }
 
   // --- quasistatic articulated-body algorithm ------------------------------------------------
 
@@ -407,6 +410,12 @@ class ArticulatedBody {
   /// empty or has a torque per joint.
   void checkTorques(std::span<const real> jointTorques) const;
   void checkTestForce(const TestForce& force) const;
+  /// @p i as an index; throws InvalidArgument naming "ArticulatedBody.link" unless a link.
+  [[nodiscard]] std::size_t checked(int i) const {
+    if (i < 0 || i >= linkCount()) refuseLink(i);
+    return static_cast<std::size_t>(i);
+  }
+  [[noreturn]] void refuseLink(int i) const;
   void depositTestForce(const TestForce& force, real magnitude);
   /// Link @p i's step of the inward inertia pass, given its articulated inertia @p da: sets
   /// terms_[i] and returns the inertia it passes to its parent (about the parent's origin).

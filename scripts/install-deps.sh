@@ -6,6 +6,8 @@ packages=(cmake g++ make libgtest-dev libbenchmark-dev doxygen)
 packages+=(pybind11-dev python3-dev python3-numpy python3-pytest python3-deap python3-matplotlib)
 # MPI: evaluation over the ranks of a job (thyrix::EvolutionMpi), its tests, and Python's mpi4py.
 packages+=(openmpi-bin libopenmpi-dev python3-mpi4py)
+# clang: a second compiler (the float build) and libFuzzer with its sanitizers (fuzz/).
+packages+=(clang-14 libclang-rt-14-dev libfuzzer-14-dev)
 # The GUI: wxWidgets to build it; Xvfb, xdotool and python3 for its tests (tests/gui/).
 if [ "${THYRIX_WITH_GUI:-0}" = 1 ]; then packages+=(libwxgtk3.2-dev xvfb xdotool python3); fi
 missing=()

@@ -1143,6 +1143,35 @@ TEST(ArticulatedAgentRules, LoopsZeroLengthLinksAndBadInputAreRefusedNamingTheFi
             }),
             "ArticulatedAgentBase.force");
   EXPECT_EQ(thrownField([&] { agent.setPose({kNaN, 0}, 0); }), "ArticulatedAgentBase.position");
+  // The getters check their index as the setters do (two joints: 0 and 1; bodies -1 to 1).
+  for (const int i : {-1, 2, 99}) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(thrownField([&] { (void)agent.jointAngle(i); }), "ArticulatedAgentBase.joint");
+    EXPECT_EQ(thrownField([&] { (void)agent.jointRate(i); }), "ArticulatedAgentBase.joint");
+    EXPECT_EQ(thrownField([&] { (void)agent.jointPosition(i); }), "ArticulatedAgentBase.joint");
+    EXPECT_EQ(thrownField([&] { (void)agent.linkTip(i); }), "ArticulatedAgentBase.joint");
+    EXPECT_EQ(thrownField([&] { (void)agent.linkShape(i); }), "ArticulatedAgentBase.joint");
+    EXPECT_EQ(thrownField([&] { (void)agent.jointTorque(i); }), "ArticulatedAgentBase.joint");
+    EXPECT_EQ(thrownField([&] { (void)agent.hasServo(i); }), "ArticulatedAgentBase.joint");
+    EXPECT_EQ(thrownField([&] { (void)agent.servoTarget(i); }), "ArticulatedAgentBase.joint");
+    EXPECT_EQ(thrownField([&] { (void)agent.servoGain(i); }), "ArticulatedAgentBase.joint");
+    EXPECT_EQ(thrownField([&] { (void)agent.servoTorque(i); }), "ArticulatedAgentBase.joint");
+    EXPECT_EQ(thrownField([&] { (void)agent.limitTorque(i); }), "ArticulatedAgentBase.joint");
+  }
+  for (const int b : {-2, 2, 99}) {
+    SCOPED_TRACE(b);
+    EXPECT_EQ(thrownField([&] { (void)agent.centerOfMass(b); }), "ArticulatedAgentBase.body");
+    EXPECT_EQ(thrownField([&] { (void)agent.bodyAngle(b); }), "ArticulatedAgentBase.body");
+    EXPECT_EQ(thrownField([&] { (void)agent.bodyVelocity(b); }), "ArticulatedAgentBase.body");
+    EXPECT_EQ(thrownField([&] { (void)agent.bodyAngularVelocity(b); }),
+              "ArticulatedAgentBase.body");
+    EXPECT_EQ(thrownField([&] { (void)agent.pointVelocity(b, {}); }), "ArticulatedAgentBase.body");
+    EXPECT_EQ(thrownField([&] { (void)agent.contactForceOn(b); }), "ArticulatedAgentBase.body");
+  }
+  EXPECT_EQ(thrownField([&] { (void)agent.linkContact(agent.contacts.size()); }),
+            "ArticulatedAgentBase.linkContact.k");
+  EXPECT_EQ(thrownField([&] { (void)agent.jointAngle(1); }), "<no exception>");
+  EXPECT_EQ(thrownField([&] { (void)agent.centerOfMass(-1); }), "<no exception>");
 
   // A non-finite pose is refused at registration, and the world is unchanged.
   auto bad = makeArm(2);

@@ -982,6 +982,19 @@ std::vector<ArticulatedLink> threeLinkChain() {
   return links;
 }
 
+TEST(ArticulatedBodyTest, GettersCheckTheirIndex) {
+  const ArticulatedBody body(1, 1, threeLinkChain());
+  for (const int i : {-1, 3, 99}) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(thrownField([&] { (void)body.jointAngle(i); }), "ArticulatedBody.link");
+    EXPECT_EQ(thrownField([&] { (void)body.jointDamping(i); }), "ArticulatedBody.link");
+    EXPECT_EQ(thrownField([&] { (void)body.link(i); }), "ArticulatedBody.link");
+    EXPECT_EQ(thrownField([&] { (void)body.tip(i); }), "ArticulatedBody.link");
+  }
+  EXPECT_EQ(thrownField([&] { (void)body.jointAngle(2); }), "<no exception>");
+  EXPECT_EQ(thrownField([&] { (void)body.tip(0); }), "<no exception>");
+}
+
 TEST(ArticulatedBodyTest, ValidationNamesTheField) {
   auto build = [](const std::vector<ArticulatedLink>& links) {
     return [links] { ArticulatedBody body(1, 1, links); };

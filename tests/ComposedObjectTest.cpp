@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 namespace thyrix {
 namespace {
 
@@ -123,7 +125,8 @@ TEST(ComposedPhysicalObject, BadPartsAreRefusedAndTheBodyUnchanged) {
       "ComposedPhysicalObject.part");
   expectField(
       [&] {
-        body.add(std::make_unique<Circle>(real(1), real(1)), {std::nan(""), 0});
+        body.add(std::make_unique<Circle>(real(1), real(1)),
+                 {std::numeric_limits<real>::quiet_NaN(), 0});
       },
       "ComposedPhysicalObject.relativePosition");
   expectField(

@@ -10,8 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace thyrix {
 namespace {
@@ -345,6 +347,47 @@ TEST(CircleCapsule, CentreExactlyOnTheAxis) {
 }
 
 // --- capsule / capsule --------------------------------------------------------------------
+
+/// A capsule half length that rounding loses at the coordinate farAway: its two end points are
+/// the same number (half an ulp of 1e11 in double is 7.6e-6, of 1e6 in float 0.031).
+constexpr real farAway = test::isFloat ? real(1e6) : real(1e11);
+constexpr real lostHalfLength = test::isFloat ? real(0.01) : real(1e-6);
+
+TEST(Capsules, AxisCollapsedFarFromTheOriginIsACircle) {
+  // A's ends (X -/+ l, 0) round to one point (X, 0): A is a circle of radius 0.5 there. B's axis
+  // (X-2, 1)-(X+2, 1) passes 1 above it: n = (0,1), gap 1 - 0.5 - 0.25 = 0.25 (depth -0.25),
+  // surfaces (X, 0.5) and (X, 0.75), midpoint (X, 0.625).
+  const Vector2 a0{farAway - lostHalfLength, 0};
+  const Vector2 a1{farAway + lostHalfLength, 0};
+  ASSERT_EQ(a0.x, a1.x) << "the axis should collapse";
+  const Vector2 b0{farAway - 2, 1};
+  const Vector2 b1{farAway + 2, 1};
+  expectSingle(collideCapsules(a0, a1, real(0.5), b0, b1, real(0.25), real(0.5)), vec(0, 1),
+               Vector2{farAway, real(0.625)}, -0.25);
+  // B collapsed instead (the pair swapped): the normal still goes from A to B.
+  expectSingle(collideCapsules(b0, b1, real(0.25), a0, a1, real(0.5), real(0.5)), vec(0, -1),
+               Vector2{farAway, real(0.625)}, -0.25);
+  // Both collapsed: two circles, (X, 0) r 0.5 and (X, 1) r 0.25.
+  const Vector2 c0{farAway - lostHalfLength, 1};
+  const Vector2 c1{farAway + lostHalfLength, 1};
+  expectSingle(collideCapsules(a0, a1, real(0.5), c0, c1, real(0.25), real(0.5)), vec(0, 1),
+               Vector2{farAway, real(0.625)}, -0.25);
+  // Both collapsed onto the same point: circles with one centre, normal +x, depth 0.75.
+  const Manifold same = collideCapsules(a0, a1, real(0.5), a0, a1, real(0.25), real(0.5));
+  expectSingle(same, vec(1, 0), Vector2{farAway + real(0.125), 0}, 0.75,
+               std::max(test::tight, farAway * std::numeric_limits<real>::epsilon()));
+}
+
+TEST(Capsules, AxisCollapsedOnTheOtherAxisIsACircleOnIt) {
+  // A collapsed onto the middle of B's axis (1,0): as a circle centred on a capsule's axis it
+  // gets the normal -perpendicular(1,0) = (0,-1) from A to B, depth 0.5 + 0.25 = 0.75; surfaces
+  // (X, -0.5) and (X, 0.25), midpoint (X, -0.125).
+  const Vector2 a0{farAway - lostHalfLength, 0};
+  const Vector2 a1{farAway + lostHalfLength, 0};
+  expectSingle(collideCapsules(a0, a1, real(0.5), Vector2{farAway - 2, 0}, Vector2{farAway + 2, 0},
+                               real(0.25), real(0.5)),
+               vec(0, -1), Vector2{farAway, real(-0.125)}, 0.75);
+}
 
 TEST(Capsules, TShapedTouching) {
   // A (0,0)-(4,0) r 0.5; B's stem (2,1)-(2,3) r 0.5 stands on A's middle: axis points (2,0)

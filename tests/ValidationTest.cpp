@@ -4,6 +4,8 @@
 #include <ThyrixLite/Border.h>
 #include <ThyrixLite/CappedRectangle.h>
 #include <ThyrixLite/Circle.h>
+#include <ThyrixLite/ComposedPhysicalObject.h>
+#include <ThyrixLite/Elastoid.h>
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixLite/Simulator.h>
 #include <gtest/gtest.h>
@@ -67,7 +69,35 @@ TEST(ValidationTest, CappedRectangleFields) {
   EXPECT_EQ(thrownField([] { CappedRectangle c(2, real(0.5), 3); }), "<no exception>");
 }
 
+TEST(ValidationTest, MassWhoseInverseOverflows) {
+  // The smallest subnormal: positive and finite, but 1 / m is infinite (in double and float).
+  const real tiny = std::numeric_limits<real>::denorm_min();
+  ASSERT_FALSE(std::isfinite(1 / tiny));
+  EXPECT_EQ(thrownField([&] { Circle c(1, tiny); }), "Circle.mass");
+  EXPECT_EQ(thrownField([&] { CappedRectangle c(1, 1, tiny); }), "CappedRectangle.mass");
+  // A mass set after construction, and a moment of inertia, are refused at registration.
+  Simulator simulator;
+  auto circle = std::make_unique<Circle>(1, 1);
+  circle->m = tiny;
+  EXPECT_EQ(thrownField([&] { simulator.registerObject(std::move(circle)); }), "Circle.m");
+  auto capsule = std::make_unique<CappedRectangle>(1, 1, 1);
+  capsule->I = tiny;
+  EXPECT_EQ(thrownField([&] { simulator.registerObject(std::move(capsule)); }),
+            "CappedRectangle.I");
+  EXPECT_EQ(simulator.objects.size(), 0u);
+}
+
 TEST(ValidationTest, BorderFields) {
+  // A normal of subnormal length (1e-310 in double, 1e-40 in float) is too short to normalize.
+  const real subnormal = std::numeric_limits<real>::min() / 4;
+  ASSERT_GT(subnormal, 0);
+  EXPECT_EQ(thrownField([&] { Border b({0, 0}, {subnormal, 0}); }), "Border.normal");
+  EXPECT_EQ(thrownField([&] { Border b({0, 0}, {0, -subnormal}); }), "Border.normal");
+  EXPECT_EQ(thrownField([&] { Border b({0, 0}, {subnormal, subnormal}); }), "Border.normal");
+  // The smallest normal length is accepted and gives a unit normal.
+  const Border smallest({0, 0}, {0, std::numeric_limits<real>::min()});
+  EXPECT_EQ(smallest.normal().x, 0);
+  EXPECT_EQ(smallest.normal().y, 1);
   EXPECT_EQ(thrownField([] { Border b({0, 0}, {0, 0}); }), "Border.normal");
   EXPECT_EQ(thrownField([] { Border b({0, 0}, {kNaN, 1}); }), "Border.normal");
   EXPECT_EQ(thrownField([] { Border b({0, 0}, {1, kNaN}); }), "Border.normal");
@@ -197,9 +227,53 @@ const std::vector<BadInput>& badInputs() {
          TestWorld other;
          w.simulator.startDrag(*other.bodies[0], other.bodies[0]->r);
        }},
+      {"StartDragObjectWithoutShape", "Simulator.startDrag.object",
+       [](TestWorld& w) {
+         // An elastoid has no shape of its own (its bodies have), so there is nothing to grab:
+         // registered in a world of its own, so that this one stays unchanged.
+         Simulator other;
+         auto elastoid = std::make_unique<Elastoid>();
+         elastoid->addBody(circleAt({3, 3}));
+         auto& registered = other.registerObject(std::move(elastoid));
+         other.startDrag(registered, {3, 3});
+         (void)w;
+       }},
       {"StartDragGrabPointNaN", "Simulator.startDrag.grabPoint",
        [](TestWorld& w) {
          w.simulator.startDrag(*w.bodies[0], {kNaN, 0});
+       }},
+      // An object owned elsewhere, handed over in a second unique_ptr: refused and not
+      // destroyed (the world still holds it, or its body or carrier does).
+      {"SameObjectTwice", "World.registerObject.object",
+       [](TestWorld& w) {
+         w.simulator.registerObject(std::unique_ptr<PhysicalObject>(w.bodies[0]));
+       }},
+      {"ObjectOfAnotherSimulator", "World.registerObject.object",
+       [](TestWorld& w) {
+         TestWorld other;
+         w.simulator.registerObject(std::unique_ptr<PhysicalObject>(other.bodies[0]));
+       }},
+      {"PartOfAComposedBody", "World.registerObject.object",
+       [](TestWorld& w) {
+         ComposedPhysicalObject body;
+         auto& part = body.add(circleAt({3, 3}), {0, 0});
+         w.simulator.registerObject(std::unique_ptr<Circle>(&part));
+       }},
+      {"SubBodyOfAnotherObject", "World.registerObject.object",
+       [](TestWorld& w) {
+         Elastoid carrier;
+         auto& body = carrier.addBody(circleAt({3, 3}));
+         w.simulator.registerObject(std::unique_ptr<Circle>(&body));
+       }},
+      {"RegisteredObjectAsPart", "ComposedPhysicalObject.part",
+       [](TestWorld& w) {
+         ComposedPhysicalObject body;
+         body.add(std::unique_ptr<Circle>(static_cast<Circle*>(w.bodies[0])), {0, 0});
+       }},
+      {"RegisteredObjectAsSubBody", "PhysicalObject.addSubBody.body",
+       [](TestWorld& w) {
+         Elastoid carrier;
+         carrier.addBody(std::unique_ptr<Circle>(static_cast<Circle*>(w.bodies[0])));
        }},
       {"DragToNaN", "Simulator.dragTo.target",
        [](TestWorld& w) {
@@ -252,6 +326,115 @@ INSTANTIATE_TEST_SUITE_P(ValidationTest, RefusedInputTest, ::testing::ValuesIn(b
                          [](const ::testing::TestParamInfo<BadInput>& testInfo) {
                            return std::string(testInfo.param.name);
                          });
+
+TEST(ValidationTest, RefusedPartOfARegisteredBodyKeepsTheBodyWhole) {
+  // A composed body in the world, whose part is then handed to registerObject: the refusal must
+  // not destroy the part the body still steps with.
+  TestWorld world;
+  TestWorld reference;
+  Circle* part = nullptr;
+  for (TestWorld* w : {&world, &reference}) {
+    auto body = std::make_unique<ComposedPhysicalObject>();
+    auto& tip = body->add(std::make_unique<Circle>(real(0.25), 1), {0, 0});
+    body->add(std::make_unique<CappedRectangle>(real(0.5), real(0.2), 1), {real(0.6), 0});
+    body->r = {3, real(0.3)};
+    w->bodies.push_back(&w->simulator.registerObject(std::move(body)));
+    if (w == &world) part = &tip;
+  }
+  const std::uint64_t hash = scenes::stateHash(world.simulator);
+  part = static_cast<Circle*>(
+      world.simulator.objects[world.simulator.objects.size() - 1].primitives()[0]);
+  EXPECT_EQ(thrownField([&] { world.simulator.registerObject(std::unique_ptr<Circle>(part)); }),
+            "World.registerObject.object");
+  EXPECT_EQ(scenes::stateHash(world.simulator), hash);
+  EXPECT_EQ(part->radius(), real(0.25)) << "the part must still be alive";
+  for (int i = 0; i < 50; ++i) {
+    world.step();
+    reference.step();
+  }
+  EXPECT_NE(scenes::stateHash(reference.simulator), hash);
+  EXPECT_EQ(scenes::stateHash(world.simulator), scenes::stateHash(reference.simulator));
+}
+
+TEST(ValidationTest, RegisteredObjectsKnowTheirWorld) {
+  TestWorld world;
+  TestWorld other;
+  for (const PhysicalObject* body : world.bodies)
+    EXPECT_EQ(body->registeredWith(), &world.simulator);
+  EXPECT_EQ(other.bodies[0]->registeredWith(), &other.simulator);
+  const Circle unregistered(1, 1);
+  EXPECT_EQ(unregistered.registeredWith(), nullptr);
+  EXPECT_EQ(unregistered.ownedElsewhere(), nullptr);
+  EXPECT_NE(world.bodies[0]->ownedElsewhere(), nullptr);
+}
+
+TEST(ValidationTest, NonFiniteValuesWrittenBetweenStepsAreRefusedBeforeTheStep) {
+  // Each field of each body, NaN or infinite, written between steps: the next step throws
+  // naming the field and the object's index, and leaves the world as it was; once the value
+  // is repaired, the world goes on exactly as one that never saw it.
+  struct Field {
+    const char* name;
+    real* (*at)(PhysicalObject&);
+  };
+  const Field fields[] = {
+      {"r", [](PhysicalObject& o) { return &o.r.x; }},
+      {"r", [](PhysicalObject& o) { return &o.r.y; }},
+      {"alpha", [](PhysicalObject& o) { return &o.alpha; }},
+      {"externalForce", [](PhysicalObject& o) { return &o.externalForce.x; }},
+      {"externalForce", [](PhysicalObject& o) { return &o.externalForce.y; }},
+      {"externalTorque", [](PhysicalObject& o) { return &o.externalTorque; }},
+  };
+  for (const Field& field : fields) {
+    for (std::size_t body = 0; body < 3; ++body) {
+      for (const real bad : {kNaN, kInf, -kInf}) {
+        SCOPED_TRACE(std::string(field.name) + " of body " + std::to_string(body) + " = " +
+                     std::to_string(bad));
+        TestWorld world;
+        TestWorld reference;
+        world.simulator.checkInputs = true;
+        for (int i = 0; i < 5; ++i) {
+          world.step();
+          reference.step();
+        }
+        PhysicalObject& object = *world.bodies[body];
+        const std::size_t index = 2 + body;  // after the two borders
+        ASSERT_EQ(&world.simulator.objects[index], &object);
+        const std::uint64_t hash = scenes::stateHash(world.simulator);
+        const std::size_t contacts = world.simulator.contacts.size();
+        real* value = field.at(object);
+        const real good = *value;
+        *value = bad;
+        try {
+          world.simulator.advanceTime();
+          ADD_FAILURE() << "no exception";
+        } catch (const InvalidArgument& error) {
+          EXPECT_EQ(error.field(), object.typeName() + "." + field.name);
+          EXPECT_NE(std::string(error.what()).find("objects[" + std::to_string(index) + "]"),
+                    std::string::npos)
+              << error.what();
+        }
+        EXPECT_EQ(world.simulator.stepCount(), reference.simulator.stepCount());
+        EXPECT_EQ(world.simulator.contacts.size(), contacts);
+        *value = good;
+        EXPECT_EQ(scenes::stateHash(world.simulator), hash);
+        for (int i = 0; i < 20; ++i) {
+          world.step();
+          reference.step();
+        }
+        EXPECT_EQ(scenes::stateHash(world.simulator), scenes::stateHash(reference.simulator));
+      }
+    }
+  }
+}
+
+TEST(ValidationTest, InputCheckIsOnByDefaultInDebugBuilds) {
+  const Simulator simulator;
+#ifdef NDEBUG
+  EXPECT_FALSE(simulator.checkInputs);
+#else
+  EXPECT_TRUE(simulator.checkInputs);
+#endif
+}
 
 TEST(ValidationTest, RefusedDragKeepsTheCurrentDrag) {
   // Two identical worlds dragging the same body; one is also sent bad drag requests.

@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
     return examples::reportUsageError(program, error);
   }
   try {
+    examples::prepareSvgDirectory(options.run);
     IunctusSimulator::Options world;
     world.objects = options.count;
     world.seed = options.run.seed;

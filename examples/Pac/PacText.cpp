@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
     return examples::reportUsageError(program, error);
   }
   try {
+    examples::prepareSvgDirectory(options.run);
     PacSimulator::Options world;
     world.food = options.count;
     world.seed = options.run.seed;

@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
   }
   try {
     const examples::ConsoleOptions& run = options.run;
+    examples::prepareSvgDirectory(run);
     SpherusSimulator::Options world;
     world.objects = options.count;
     world.seed = run.seed;

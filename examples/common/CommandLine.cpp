@@ -3,8 +3,13 @@
 #include <ThyrixLite/SvgGUI.h>
 #include <ThyrixLite/WorldDrawing.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <system_error>
 
 namespace thyrix::examples {
 
@@ -106,6 +111,24 @@ void AnimationRecorder::record(const Simulator& simulator, long step) {
 
 void AnimationRecorder::finish() const {
   if (animation_) animation_->save(options_.animation);
+}
+
+void prepareSvgDirectory(const ConsoleOptions& options) {
+  if (options.svgDirectory.empty()) return;
+  const std::string& directory = options.svgDirectory;
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error)
+    throw std::runtime_error("--svg: cannot create the directory " + directory + ": " +
+                             error.message());
+  // A file written and removed: permissions and a read-only file system show only on writing.
+  const std::string probe = directory + "/.thyrix-svg-probe";
+  std::FILE* file = std::fopen(probe.c_str(), "wb");
+  if (file == nullptr)
+    throw std::runtime_error("--svg: cannot write to the directory " + directory + ": " +
+                             std::strerror(errno));
+  std::fclose(file);
+  std::remove(probe.c_str());
 }
 
 void writeSvgIfDue(const ConsoleOptions& options, const Simulator& simulator, long step,

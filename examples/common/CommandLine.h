@@ -94,6 +94,11 @@ class AnimationRecorder {
   std::unique_ptr<SvgAnimation> animation_;
 };
 
+/// With --svg, creates its directory and checks that a file can be written there, so that a
+/// bad directory is reported at the start, not when the first picture is due.
+/// @throws std::runtime_error naming the directory if it cannot be created or written to
+void prepareSvgDirectory(const ConsoleOptions& options);
+
 /// At the steps --svg-every asks for (and only with --svg), writes
 /// `DIR/step_NNNNNN.svg`: the square [lower, upper] of the world, contacts, forces and
 /// sensors drawn. @throws std::runtime_error if the file cannot be written
