@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace thyrix {
 namespace {
@@ -106,6 +107,23 @@ void Iunctus::control() {
 void Iunctus::draw(GUI& gui) const {
   ArticulatedAgentQuasistatic::draw(gui);
   gui.drawLine(r, r + heading() * parameters_.baseRadius, colors::black);
+}
+
+void Iunctus::saveState(StateRecord& record) const {
+  ArticulatedAgentQuasistatic::saveState(record);
+  record.add(std::span<const real>(sensors_));
+  record.add(std::span<const real>(effectors_));
+  record.add(controller_ != nullptr);
+  if (controller_) controller_->saveState(record);
+}
+
+void Iunctus::restoreState(StateRecord::Reader& reader) {
+  ArticulatedAgentQuasistatic::restoreState(reader);
+  reader.reals(sensors_);
+  reader.reals(effectors_);
+  if (reader.flag() != (controller_ != nullptr))
+    throw std::runtime_error("WorldState: the Iunctus's controller is in one world, not the other");
+  if (controller_) controller_->restoreState(reader);
 }
 
 }  // namespace thyrix

@@ -101,6 +101,11 @@ class Iunctus : public ArticulatedAgentQuasistatic {
 
   /// Phase 7: sensors -> controller -> base force and torque, servo targets for the next step.
   void control() override;
+  /// ArticulatedAgentQuasistatic::saveState(), then the sensor and effector activations and the
+  /// controller's state (Controller::saveState()).
+  void saveState(StateRecord& record) const override;
+  /// Reads back what saveState() appended.
+  void restoreState(StateRecord::Reader& reader) override;
   void draw(GUI& gui) const override;
   [[nodiscard]] std::string typeName() const override { return "Iunctus"; }
   /// The simulator's time step (s), 0 before registration.

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace thyrix {
 namespace {
@@ -101,6 +103,28 @@ void IunctusGrasper::step() {
       drive(0, 0, closedPose);
       break;
   }
+}
+
+void IunctusGrasper::saveState(StateRecord& record) const {
+  record.addWord(static_cast<std::uint64_t>(phase_));
+  record.addInteger(still_);
+  record.add(carryStart_);
+  for (const real angle : pose_) record.add(angle);
+  record.add(holdPosition_);
+  record.add(holdHeading_);
+}
+
+void IunctusGrasper::restoreState(StateRecord::Reader& reader) {
+  const std::uint64_t phase = reader.word();
+  if (phase > static_cast<std::uint64_t>(Phase::Holding))
+    throw std::runtime_error("WorldState: IunctusGrasper's phase " + std::to_string(phase) +
+                             " does not exist");
+  phase_ = static_cast<Phase>(phase);
+  still_ = static_cast<int>(reader.integer());
+  carryStart_ = reader.vector();
+  for (real& angle : pose_) angle = reader.value();
+  holdPosition_ = reader.vector();
+  holdHeading_ = reader.value();
 }
 
 }  // namespace thyrix

@@ -57,6 +57,12 @@ class IunctusGrasper : public Controller {
   /// The target's position when carrying began.
   [[nodiscard]] Vector2 carryStart() const { return carryStart_; }
 
+  /// Appends the phase, the still count, the carry start, the closing pose and the hold.
+  void saveState(StateRecord& record) const override;
+  /// Reads back what saveState() appended.
+  /// @throws std::runtime_error for a phase that does not exist
+  void restoreState(StateRecord::Reader& reader) override;
+
  private:
   void drive(real forwardCommand, real turnCommand, const real (&pose)[3]);
   [[nodiscard]] bool reached(const real (&pose)[3]) const;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 namespace thyrix {
@@ -226,6 +227,29 @@ void Pac::draw(GUI& gui) const {
   mouthLink().draw(gui);
   gui.drawLine(r, r + forward() * parameters_.ringRadius, colors::black);
   gui.drawCircle(eye_.eyePosition(), parameters_.radius / 5, alpha, colors::black, colors::black);
+}
+
+void Pac::saveState(StateRecord& record) const {
+  Elastoid::saveState(record);
+  record.add(std::span<const real>(sensors_));
+  record.add(shapeCentroid_);
+  record.add(shapeMouth_);
+  for (const Vector2 point : shape_) record.add(point);
+  record.add(std::span<const real>(effectors_));
+  record.add(controller_ != nullptr);
+  if (controller_) controller_->saveState(record);
+}
+
+void Pac::restoreState(StateRecord::Reader& reader) {
+  Elastoid::restoreState(reader);
+  sensors_ = reader.realVector();
+  shapeCentroid_ = reader.vector();
+  shapeMouth_ = reader.value();
+  for (Vector2& point : shape_) point = reader.vector();
+  reader.reals(effectors_);
+  if (reader.flag() != (controller_ != nullptr))
+    throw std::runtime_error("WorldState: the Pac's controller is in one world, not the other");
+  if (controller_) controller_->restoreState(reader);
 }
 
 }  // namespace thyrix

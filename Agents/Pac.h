@@ -154,6 +154,11 @@ class Pac : public Elastoid {
   void updateSensors(const World& world) override;
   /// Phase 7: sensors -> controller -> locomotion forces and link rest lengths for the next step.
   void control() override;
+  /// Elastoid::saveState(), then the sensor and effector activations and the controller's state
+  /// (Controller::saveState()).
+  void saveState(StateRecord& record) const override;
+  /// Reads back what saveState() appended.
+  void restoreState(StateRecord::Reader& reader) override;
   /// Draws the ring outline (the cross-links would hide the inside), the mouth link, the
   /// heading and the eye.
   void draw(GUI& gui) const override;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace thyrix {
 
@@ -65,6 +67,20 @@ void PacEater::step() {
       drive(1, 0, 0);
       break;
   }
+}
+
+void PacEater::saveState(StateRecord& record) const {
+  record.addWord(static_cast<std::uint64_t>(phase_));
+  record.addInteger(stalled_);
+}
+
+void PacEater::restoreState(StateRecord::Reader& reader) {
+  const std::uint64_t phase = reader.word();
+  if (phase > static_cast<std::uint64_t>(Phase::Carrying))
+    throw std::runtime_error("WorldState: PacEater's phase " + std::to_string(phase) +
+                             " does not exist");
+  phase_ = static_cast<Phase>(phase);
+  stalled_ = static_cast<int>(reader.integer());
 }
 
 }  // namespace thyrix

@@ -37,6 +37,12 @@ class PacEater {
   /// The target.
   [[nodiscard]] const PhysicalObject& target() const { return *target_; }
 
+  /// Appends the phase and the steps stalled (the target is saved by the script's owner).
+  void saveState(StateRecord& record) const;
+  /// Reads back what saveState() appended.
+  /// @throws std::runtime_error for a phase that does not exist
+  void restoreState(StateRecord::Reader& reader);
+
  private:
   void drive(real forwardCommand, real turnCommand, real mouthCommand);
 

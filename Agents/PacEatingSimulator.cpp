@@ -1,6 +1,8 @@
 #include <Agents/PacEatingSimulator.h>
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace thyrix {
 
@@ -47,6 +49,45 @@ void PacEatingSimulator::advanceTime() {
     std::fill(pac(0).effectors().begin(), pac(0).effectors().end(), real(0));
   ++sinceTarget_;
   PacSimulator::advanceTime();
+}
+
+std::uint64_t PacEatingSimulator::indexOf(const PhysicalObject& object) const {
+  for (std::size_t i = 0; i < objects.size(); ++i)
+    if (&objects[i] == &object) return i;
+  return objects.size();
+}
+
+const PhysicalObject& PacEatingSimulator::objectAt(std::uint64_t index) const {
+  if (index >= objects.size())
+    throw std::runtime_error("WorldState: the script's object " + std::to_string(index) +
+                             " is not in the world");
+  return objects[static_cast<std::size_t>(index)];
+}
+
+void PacEatingSimulator::saveOwnState(StateRecord& record) const {
+  record.add(eater_.has_value());
+  if (eater_) {
+    record.addWord(indexOf(eater_->target()));
+    eater_->saveState(record);
+  }
+  record.addWord(skipped_.size());
+  for (const PhysicalObject* object : skipped_) record.addWord(indexOf(*object));
+  record.addInteger(sinceTarget_);
+}
+
+void PacEatingSimulator::restoreOwnState(StateRecord::Reader& reader) {
+  std::optional<PacEater> eater;
+  if (reader.flag()) {
+    eater.emplace(pac(0), objectAt(reader.word()));
+    eater->restoreState(reader);
+  }
+  const std::uint64_t count = reader.word();
+  if (count > objects.size()) throw std::runtime_error("WorldState: too many skipped objects");
+  std::vector<const PhysicalObject*> skipped;
+  for (std::uint64_t k = 0; k < count; ++k) skipped.push_back(&objectAt(reader.word()));
+  sinceTarget_ = static_cast<long>(reader.integer());
+  eater_ = std::move(eater);
+  skipped_ = std::move(skipped);
 }
 
 }  // namespace thyrix

@@ -31,10 +31,21 @@ class PacEatingSimulator : public PacSimulator {
   /// The script eating now, or null before the first step and when nothing is left to eat.
   [[nodiscard]] const PacEater* eater() const { return eater_ ? &*eater_ : nullptr; }
 
+ protected:
+  /// The script: its target, phase and stall count, the food skipped, the steps since the
+  /// target was chosen.
+  void saveOwnState(StateRecord& record) const override;
+  /// Reads back what saveOwnState() appended.
+  void restoreOwnState(StateRecord::Reader& reader) override;
+
  private:
   /// The food circle nearest to Pac 0 that no Pac holds, that is not skipped, and that lies
   /// far enough from the walls for Pac to get its mouth past it; or null.
   [[nodiscard]] const Circle* nearestFreeFood() const;
+  /// The index of @p object in `objects` (objects.size() if it is not there).
+  [[nodiscard]] std::uint64_t indexOf(const PhysicalObject& object) const;
+  /// The object at @p index. @throws std::runtime_error if there is none
+  [[nodiscard]] const PhysicalObject& objectAt(std::uint64_t index) const;
 
   std::optional<PacEater> eater_;
   std::vector<const PhysicalObject*> skipped_;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace thyrix {
 namespace {
@@ -100,6 +101,23 @@ void Spherus::draw(GUI& gui) const {
   Elastoid::draw(gui);
   const Vector2 c = centre();
   gui.drawLine(c, c + forward() * parameters_.radius, colors::black);
+}
+
+void Spherus::saveState(StateRecord& record) const {
+  Elastoid::saveState(record);
+  record.add(std::span<const real>(sensors_));
+  record.add(std::span<const real>(effectors_));
+  record.add(controller_ != nullptr);
+  if (controller_) controller_->saveState(record);
+}
+
+void Spherus::restoreState(StateRecord::Reader& reader) {
+  Elastoid::restoreState(reader);
+  reader.reals(sensors_);
+  reader.reals(effectors_);
+  if (reader.flag() != (controller_ != nullptr))
+    throw std::runtime_error("WorldState: the Spherus's controller is in one world, not the other");
+  if (controller_) controller_->restoreState(reader);
 }
 
 }  // namespace thyrix

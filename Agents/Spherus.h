@@ -82,6 +82,11 @@ class Spherus : public Elastoid {
   void updateSensors(const World& world) override;
   /// Phase 7: sensors -> controller -> rocket forces and link length for the next step.
   void control() override;
+  /// Elastoid::saveState(), then the sensor and effector activations and the controller's state
+  /// (Controller::saveState()).
+  void saveState(StateRecord& record) const override;
+  /// Reads back what saveState() appended.
+  void restoreState(StateRecord::Reader& reader) override;
   void draw(GUI& gui) const override;
   [[nodiscard]] std::string typeName() const override { return "Spherus"; }
 

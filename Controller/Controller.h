@@ -2,6 +2,7 @@
 /// @file Controller.h
 /// @brief The interface between an agent's sensors and its effectors.
 
+#include <ThyrixLite/StateRecord.h>
 #include <ThyrixLite/ThyrixParameters.h>
 
 #include <span>
@@ -21,6 +22,13 @@ class Controller {
 
   /// Returns to the initial state (for the next episode). The default has no state.
   virtual void reset() {}
+
+  /// Appends to @p record whatever of the controller's state the next control() reads (its
+  /// random stream, a network's activations), for Simulator::saveState(). The default, for a
+  /// controller without state, appends nothing.
+  virtual void saveState(StateRecord& /*record*/) const {}
+  /// Reads back, in the same order, what saveState() appended. The default reads nothing.
+  virtual void restoreState(StateRecord::Reader& /*reader*/) {}
 };
 
 }  // namespace thyrix

@@ -149,4 +149,14 @@ void NeuralController::stepCtrnn(std::span<const real> sensors, std::span<real> 
   activateOutputs(spec_.activation, effectors);
 }
 
+void NeuralController::saveState(StateRecord& record) const {
+  record.add(std::span<const real>(state_));
+  record.add(std::span<const real>(firing_));
+}
+
+void NeuralController::restoreState(StateRecord::Reader& reader) {
+  reader.reals(state_);
+  reader.reals(firing_);
+}
+
 }  // namespace thyrix

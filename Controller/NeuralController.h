@@ -50,6 +50,12 @@ class NeuralController : public Controller {
 
   /// Sets a Ctrnn's neuron states back to 0 (a feed-forward network has no state).
   void reset() override;
+  /// Appends the CTRNN's neuron states and firing rates (nothing else carries over: a
+  /// feed-forward network has no state).
+  void saveState(StateRecord& record) const override;
+  /// Reads back what saveState() appended.
+  /// @throws std::runtime_error if the record's network has another number of neurons
+  void restoreState(StateRecord::Reader& reader) override;
 
  private:
   void feedForward(std::span<const real> sensors, std::span<real> effectors);

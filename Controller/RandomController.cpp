@@ -2,6 +2,8 @@
 #include <ThyrixLite/InvalidArgument.h>
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace thyrix {
 
@@ -29,6 +31,34 @@ void RandomController::reset() {
   random_.seed(seed_);
   held_.clear();
   remaining_ = 0;
+}
+
+void RandomController::saveState(StateRecord& record) const {
+  const MTRandom::State stream = random_.saveState();
+  for (const std::uint32_t word : stream.words) record.addWord(word);
+  record.addWord(stream.index);
+  record.add(stream.hasSpare);
+  record.addDouble(stream.spare);
+  record.add(std::span<const real>(held_));
+  record.addInteger(remaining_);
+}
+
+void RandomController::restoreState(StateRecord::Reader& reader) {
+  MTRandom::State stream;
+  for (std::uint32_t& word : stream.words) word = static_cast<std::uint32_t>(reader.word());
+  stream.index = static_cast<std::uint32_t>(reader.word());
+  stream.hasSpare = reader.flag();
+  stream.spare = reader.number();
+  std::vector<real> held = reader.realVector();
+  const auto remaining = static_cast<int>(reader.integer());
+  try {
+    random_.restoreState(stream);  // (checks the stream first: nothing is changed if it throws)
+  } catch (const std::invalid_argument& error) {
+    throw std::runtime_error(std::string("WorldState: RandomController's random stream: ") +
+                             error.what());
+  }
+  held_ = std::move(held);
+  remaining_ = remaining;
 }
 
 }  // namespace thyrix

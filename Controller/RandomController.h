@@ -23,6 +23,11 @@ class RandomController : public Controller {
   void control(std::span<const real> sensors, std::span<real> effectors) override;
   /// Restarts the stream from the seed.
   void reset() override;
+  /// Appends the random stream, the held activations and the steps left to hold them.
+  void saveState(StateRecord& record) const override;
+  /// Reads back what saveState() appended.
+  /// @throws std::runtime_error if the record does not hold a valid random stream
+  void restoreState(StateRecord::Reader& reader) override;
 
  private:
   std::uint32_t seed_;

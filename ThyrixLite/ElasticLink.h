@@ -44,6 +44,16 @@ class ElasticLink : public GraphicalObject {
   [[nodiscard]] real length() const { return (worldAnchorB() - worldAnchorA()).length(); }
   /// The tension applied by the last applyForces (positive pulls the anchors together).
   [[nodiscard]] real tension() const { return tension_; }
+  /// Appends the rest length and the last tension to @p record (Elastoid::saveState()).
+  void saveState(StateRecord& record) const {
+    record.add(restLength_);
+    record.add(tension_);
+  }
+  /// Reads back what saveState() appended.
+  void restoreState(StateRecord::Reader& reader) {
+    restLength_ = reader.value();
+    tension_ = reader.value();
+  }
   /// Anchor on body A, world coordinates.
   [[nodiscard]] Vector2 worldAnchorA() const { return a_->toWorld(anchorA_); }
   /// Anchor on body B, world coordinates.

@@ -53,4 +53,14 @@ void Elastoid::draw(GUI& gui) const {
   for (const auto& link : links_) link->draw(gui);
 }
 
+void Elastoid::saveState(StateRecord& record) const {
+  PhysicalObject::saveState(record);
+  for (const auto& link : links_) link->saveState(record);
+}
+
+void Elastoid::restoreState(StateRecord::Reader& reader) {
+  PhysicalObject::restoreState(reader);
+  for (const auto& link : links_) link->restoreState(reader);
+}
+
 }  // namespace thyrix

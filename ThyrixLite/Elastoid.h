@@ -46,6 +46,11 @@ class Elastoid : public PhysicalObject {
   /// The elastoid has no pose of its own to integrate.
   void integrate(real dt) override;
   void validate() const override;
+  /// PhysicalObject::saveState(), then each link's rest length and tension (its bodies are
+  /// objects of their own, saved by the simulator).
+  void saveState(StateRecord& record) const override;
+  /// Reads back what saveState() appended.
+  void restoreState(StateRecord::Reader& reader) override;
   /// Draws the links (the bodies draw themselves).
   void draw(GUI& gui) const override;
   [[nodiscard]] std::string typeName() const override { return "Elastoid"; }

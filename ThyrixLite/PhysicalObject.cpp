@@ -17,6 +17,32 @@ void PhysicalObject::updateSensors(const World& /*world*/) {}
 
 std::span<const VisualSensor> PhysicalObject::visualSensors() const { return {}; }
 
+void PhysicalObject::saveState(StateRecord& record) const {
+  record.add(r);
+  record.add(alpha);
+  record.add(v);
+  record.add(omega);
+  record.add(externalForce);
+  record.add(externalTorque);
+  record.add(fixed);
+  record.addWord(collisionGroup);
+  for (const Primitive* part : primitives_)
+    if (part != this) part->saveState(record);
+}
+
+void PhysicalObject::restoreState(StateRecord::Reader& reader) {
+  r = reader.vector();
+  alpha = reader.value();
+  v = reader.vector();
+  omega = reader.value();
+  externalForce = reader.vector();
+  externalTorque = reader.value();
+  fixed = reader.flag();
+  collisionGroup = static_cast<std::uint32_t>(reader.word());
+  for (Primitive* part : primitives_)
+    if (part != this) part->restoreState(reader);
+}
+
 void PhysicalObject::onRegistered(Simulator& /*simulator*/) noexcept {}
 
 void PhysicalObject::validate() const {

@@ -5,6 +5,7 @@
 #include <ThyrixLite/ContactInfo.h>
 #include <ThyrixLite/GraphicalObject.h>
 #include <ThyrixLite/Renamed.h>
+#include <ThyrixLite/StateRecord.h>
 #include <ThyrixLite/ThyrixParameters.h>
 #include <ThyrixLite/Vector2.h>
 #include <Tools/Inlining.h>
@@ -132,6 +133,15 @@ class PhysicalObject : public GraphicalObject {
   /// Phase 2 of a step, after contact detection: updates this object's visual sensors from
   /// the world. The default does nothing.
   virtual void updateSensors(const World& world);
+
+  /// Appends to @p record everything of this object that can change the next step (Simulator::
+  /// saveState()): the pose, velocities, pending force and torque, `fixed`, `collisionGroup`,
+  /// then each part's (Primitive::saveState()). A subclass with state of its own (an agent's
+  /// controller, a link's commanded length) overrides it, calls its base's first, then appends
+  /// its own values.
+  virtual void saveState(StateRecord& record) const;
+  /// Reads back, in the same order, what saveState() appended (Simulator::restoreState()).
+  virtual void restoreState(StateRecord::Reader& reader);
 
   /// The visual sensors this object carries, for drawing and inspection (none by default).
   [[nodiscard]] virtual std::span<const VisualSensor> visualSensors() const;

@@ -16,4 +16,18 @@ void Primitive::touch(Vector2 worldPoint, real force) {
   }
 }
 
+void Primitive::saveState(StateRecord& record) const {
+  PhysicalObject::saveState(record);
+  record.add(direction_);
+  record.add(directionAngle_);
+  tactile_.saveState(record);
+}
+
+void Primitive::restoreState(StateRecord::Reader& reader) {
+  PhysicalObject::restoreState(reader);
+  direction_ = reader.vector();
+  directionAngle_ = reader.value();
+  tactile_.restoreState(reader);
+}
+
 }  // namespace thyrix

@@ -76,6 +76,12 @@ class Primitive : public PhysicalObject {
     directionAngle_ = angle;
   }
 
+  /// PhysicalObject::saveState(), then the cached direction (an owner's kinematics may have
+  /// set it with other bits than a cosine would give) and the tactile sensors' sums.
+  void saveState(StateRecord& record) const override;
+  /// Reads back what saveState() appended.
+  void restoreState(StateRecord::Reader& reader) override;
+
   /// Moves `r` and `alpha` to follow the owner (no-op for a standalone primitive).
   void followOwner() {
     if (owner_ == this || !rigid_) return;

@@ -12,10 +12,12 @@
 #include <ThyrixLite/ObjectList.h>
 #include <ThyrixLite/Primitive.h>
 #include <ThyrixLite/World.h>
+#include <ThyrixLite/WorldState.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -206,9 +208,26 @@ class Simulator : public World {
   /// a far mouse pulls the body at a bounded speed, so it cannot jump through other objects.
   real dragMaxStepFraction = real(0.2);
 
+  /// Everything that can change the next step, as one value (WorldState): restoring it,
+  /// into this world or into one built the same way, then stepping gives the same steps, bit
+  /// for bit, as stepping on from here.
+  [[nodiscard]] WorldState saveState() const;
+  /// Puts the world in @p state, as saveState() made it; the caches rest skipping, the broad
+  /// phase and the contact lookups keep are rebuilt by the next step.
+  /// @throws InvalidArgument naming "WorldState" and saying what differs if the state was saved
+  ///         from a world of another make-up (other objects, types, shapes, agents), or if a
+  ///         part of it does not fit this world; the world is then unchanged
+  void restoreState(const WorldState& state);
+
  protected:
   void prepareRegistration(std::span<PhysicalObject* const> added) override;
   void completeRegistration(PhysicalObject& object, std::size_t index) noexcept override;
+  /// Appends to @p record the state of a subclass's own (fitness counts, a script's phase),
+  /// for saveState(); the default has none.
+  virtual void saveOwnState(StateRecord& /*record*/) const {}
+  /// Reads back what saveOwnState() appended, for restoreState(); it may throw (the world is
+  /// then put back as it was).
+  virtual void restoreOwnState(StateRecord::Reader& /*reader*/) {}
 
  private:
   /// A primitive as the collision pipeline sees it.
@@ -484,6 +503,13 @@ class Simulator : public World {
   }
   /// Throws InvalidArgument for the first object whose pose or accumulators are not finite.
   void checkFinite() const;
+  /// The make-up a state must have been saved from: object types and shapes, a line each.
+  [[nodiscard]] std::string makeUp() const;
+  /// restoreState() once the make-up is known to match (may throw half-way).
+  void applyState(const WorldState& state);
+  /// Makes @p list this step's contacts, as a detection (@p complete) and a solve (@p solved)
+  /// would have left them, with the notes the next step's lookups by pair read.
+  void restoreContacts(std::vector<GlobalContactInfo> list, bool complete, bool solved);
 
   std::unique_ptr<Integrator> integrator_;  // never null
   bool eulerIntegrator_ = true;             // integrator_ is exactly Integrator: its fast loop

@@ -489,4 +489,29 @@ void Simulator::clearContactLists() {
   listedCount_ = 0;
 }
 
+void Simulator::restoreContacts(std::vector<GlobalContactInfo> list, bool complete, bool solved) {
+  clearContactLists();
+  resetCounts();
+  contacts.items_ = std::move(list);
+  if (pairChains_.size() != shapes_.size()) {
+    pairChains_.resize(shapes_.size());
+    previousChains_.resize(shapes_.size());
+  }
+  // Noted as the detection that found them noted them: each pair's points are consecutive.
+  nextListStamp();
+  ContactPair* const notes = notesFor(contacts.size());
+  for (std::uint32_t k = 0; k < contacts.size(); ++k) {
+    const GlobalContactInfo& c = contacts.items_[k];
+    const bool first = k == 0 || notes[k - 1].key != pairKey(c.shapeA, c.shapeB);
+    noteContactPair(notes, k, c.shapeA, c.shapeB, first);
+  }
+  if (contacts.size() > scannedListLength) chainFirstPairs(0);
+  contactsComplete_ = complete;
+  contactsSolved_ = solved;
+  previousValid_ = false;
+  previousSolved_ = false;
+  countsComplete_ = false;
+  indexContacts();  // each object's list, as the step left it
+}
+
 }  // namespace thyrix

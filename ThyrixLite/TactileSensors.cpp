@@ -114,4 +114,14 @@ void TactileSensors::finishSums() {
   for (real& a : activations_) a = std::min(real(1), a / saturation);
 }
 
+void TactileSensors::saveState(StateRecord& record) const {
+  record.add(std::span<const real>(activations_));
+  record.add(touched_);
+}
+
+void TactileSensors::restoreState(StateRecord::Reader& reader) {
+  reader.reals(activations_);
+  touched_ = reader.flag();
+}
+
 }  // namespace thyrix

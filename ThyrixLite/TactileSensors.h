@@ -2,6 +2,7 @@
 /// @file TactileSensors.h
 /// @brief Touch sensors splitting a primitive's outline into sectors.
 
+#include <ThyrixLite/StateRecord.h>
 #include <ThyrixLite/Vector2.h>
 
 #include <span>
@@ -61,6 +62,11 @@ class TactileSensors {
   void finish() {
     if (touched_) finishSums();
   }
+
+  /// Appends the sums or activations and whether any is touched to @p record.
+  void saveState(StateRecord& record) const;
+  /// Reads back what saveState() appended.
+  void restoreState(StateRecord::Reader& reader);
 
  private:
   void clearSums();

@@ -78,6 +78,11 @@ class World {
   virtual void prepareRegistration(std::span<PhysicalObject* const> added);
   /// Called once the object has joined `objects`; must not throw.
   virtual void completeRegistration(PhysicalObject& object, std::size_t index) noexcept;
+  /// Sets the step count and the time (a restored state's: Simulator::restoreState()).
+  void setClock(std::uint64_t stepCount, double time) {
+    stepCount_ = stepCount;
+    time_ = time;
+  }
 
  private:
   void adopt(std::unique_ptr<PhysicalObject> object);

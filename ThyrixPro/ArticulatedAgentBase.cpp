@@ -490,4 +490,74 @@ void ArticulatedAgentBase::draw(GUI& gui) const {
                    outlineColor);
 }
 
+namespace {
+
+void addOutput(StateRecord& record, const ArticulatedBody::Output& output) {
+  for (const Vector3& velocity : output.velocities) {
+    record.add(velocity.x);
+    record.add(velocity.y);
+    record.add(velocity.z);
+  }
+  record.add(std::span<const real>(output.jointRates));
+}
+
+void readOutput(StateRecord::Reader& reader, ArticulatedBody::Output& output) {
+  for (Vector3& velocity : output.velocities) {
+    velocity.x = reader.value();
+    velocity.y = reader.value();
+    velocity.z = reader.value();
+  }
+  reader.reals(output.jointRates);
+}
+
+}  // namespace
+
+void ArticulatedAgentBase::saveState(StateRecord& record) const {
+  PhysicalObject::saveState(record);
+  record.add(body_.basePosition());
+  record.add(body_.baseAngle());
+  record.add(body_.jointAngles());
+  addOutput(record, velocities_);
+  for (const auto* values :
+       {&jointTorques_, &servoTargets_, &servoGains_, &servoTorques_, &limitTorques_})
+    record.add(std::span<const real>(*values));
+  record.addInteger(servoCount_);
+  for (const Vector3& wrench : linkWrenches_) {
+    record.add(wrench.x);
+    record.add(wrench.y);
+    record.add(wrench.z);
+  }
+  record.add(linkWrenchesClear_);
+  record.add(linkWeightKept_);
+  record.add(linkWeight_.x);
+  record.add(linkWeight_.y);
+  record.add(linkWeight_.z);
+}
+
+void ArticulatedAgentBase::restoreState(StateRecord::Reader& reader) {
+  PhysicalObject::restoreState(reader);
+  const Vector2 basePosition = reader.vector();
+  const real baseAngle = reader.value();
+  std::vector<real> q(body_.jointAngles().size());
+  reader.reals(q);
+  body_.setBasePose(basePosition, baseAngle);
+  body_.setJointAngles(q);
+  readOutput(reader, velocities_);
+  for (auto* values :
+       {&jointTorques_, &servoTargets_, &servoGains_, &servoTorques_, &limitTorques_})
+    reader.reals(*values);
+  servoCount_ = static_cast<int>(reader.integer());
+  for (Vector3& wrench : linkWrenches_) {
+    wrench.x = reader.value();
+    wrench.y = reader.value();
+    wrench.z = reader.value();
+  }
+  linkWrenchesClear_ = reader.flag();
+  linkWeightKept_ = reader.flag();
+  linkWeight_.x = reader.value();
+  linkWeight_.y = reader.value();
+  linkWeight_.z = reader.value();
+  servosChanged_ = true;  // the dampings follow the restored gains
+}
+
 }  // namespace thyrix

@@ -285,6 +285,11 @@ class ArticulatedAgentBase : public MultiBodyObject {
   /// Also checks limitMargin (finite, non-negative) and that every primitive is the agent's own
   /// (an ArticulatedComponent).
   void validate() const override;
+  /// PhysicalObject::saveState() (the base and the links' shapes), then the joint angles, the
+  /// servos, the effector and last step's torques and rates, and the pending link wrenches.
+  void saveState(StateRecord& record) const override;
+  /// Reads back what saveState() appended; the servos' dampings are set again at the next step.
+  void restoreState(StateRecord::Reader& reader) override;
   /// Draws the base's parts and the links' capsules, then each joint as a small circle.
   void draw(GUI& gui) const override;
   [[nodiscard]] std::string typeName() const override { return "ArticulatedAgentBase"; }

@@ -207,4 +207,32 @@ void ArticulatedAgentQuasistatic::integrate(real dt) {
   placeBase();
 }
 
+void ArticulatedAgentQuasistatic::saveState(StateRecord& record) const {
+  ArticulatedAgentBase::saveState(record);
+  record.add(std::span<const real>(lastRates_));
+  record.add(freeSaved_);
+  for (const Vector3& velocity : free_.velocities) {
+    record.add(velocity.x);
+    record.add(velocity.y);
+    record.add(velocity.z);
+  }
+  record.add(std::span<const real>(free_.jointRates));
+  record.add(limitsActed_);
+  record.add(servoTorquesSet_);
+}
+
+void ArticulatedAgentQuasistatic::restoreState(StateRecord::Reader& reader) {
+  ArticulatedAgentBase::restoreState(reader);
+  reader.reals(lastRates_);
+  freeSaved_ = reader.flag();
+  for (Vector3& velocity : free_.velocities) {
+    velocity.x = reader.value();
+    velocity.y = reader.value();
+    velocity.z = reader.value();
+  }
+  reader.reals(free_.jointRates);
+  limitsActed_ = reader.flag();
+  servoTorquesSet_ = reader.flag();
+}
+
 }  // namespace thyrix

@@ -70,6 +70,10 @@ class ArticulatedAgentQuasistatic : public ArticulatedAgentBase {
   void collectInternalConstraints(real dt, std::vector<InternalConstraint>& out) override;
 
   [[nodiscard]] std::string typeName() const override { return "ArticulatedAgentQuasistatic"; }
+  /// ArticulatedAgentBase::saveState(), then the last step's rates and free velocities.
+  void saveState(StateRecord& record) const override;
+  /// Reads back what saveState() appended.
+  void restoreState(StateRecord::Reader& reader) override;
 
  private:
   [[nodiscard]] ArticulatedBody::TestForce toTestForce(const UnitForce& force) const;
