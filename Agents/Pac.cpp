@@ -242,7 +242,7 @@ void Pac::saveState(StateRecord& record) const {
 
 void Pac::restoreState(StateRecord::Reader& reader) {
   Elastoid::restoreState(reader);
-  sensors_ = reader.realVector();
+  reader.reals(sensors_);
   shapeCentroid_ = reader.vector();
   shapeMouth_ = reader.value();
   for (Vector2& point : shape_) point = reader.vector();
