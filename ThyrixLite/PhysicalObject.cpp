@@ -26,6 +26,8 @@ void PhysicalObject::saveState(StateRecord& record) const {
   record.add(externalTorque);
   record.add(fixed);
   record.addWord(collisionGroup);
+  record.add(boxMin);  // (the next detection recomputes them: saved for what is drawn until then)
+  record.add(boxMax);
   for (const Primitive* part : primitives_)
     if (part != this) part->saveState(record);
 }
@@ -39,6 +41,8 @@ void PhysicalObject::restoreState(StateRecord::Reader& reader) {
   externalTorque = reader.value();
   fixed = reader.flag();
   collisionGroup = static_cast<std::uint32_t>(reader.word());
+  boxMin = reader.vector();
+  boxMax = reader.vector();
   for (Primitive* part : primitives_)
     if (part != this) part->restoreState(reader);
 }

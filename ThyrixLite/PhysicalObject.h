@@ -135,8 +135,8 @@ class PhysicalObject : public GraphicalObject {
   virtual void updateSensors(const World& world);
 
   /// Appends to @p record everything of this object that can change the next step (Simulator::
-  /// saveState()): the pose, velocities, pending force and torque, `fixed`, `collisionGroup`,
-  /// then each part's (Primitive::saveState()). A subclass with state of its own (an agent's
+  /// saveState()): the pose, velocities, pending force and torque, `fixed`, `collisionGroup`, the
+  /// box, then each part's (Primitive::saveState()). A subclass with state of its own (an agent's
   /// controller, a link's commanded length) overrides it, calls its base's first, then appends
   /// its own values.
   virtual void saveState(StateRecord& record) const;
