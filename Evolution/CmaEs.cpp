@@ -95,18 +95,8 @@ std::span<const std::vector<double>> CmaEs::ask() {
 
 void CmaEs::tell(std::span<const double> fitnesses) {
   if (!asked_) throw InvalidArgument("CmaEs.fitnesses", "given before ask()");
-  if (fitnesses.size() != lambda_)
-    throw InvalidArgument("CmaEs.fitnesses", "must hold " + std::to_string(lambda_) +
-                                                 " values, one per point (got " +
-                                                 std::to_string(fitnesses.size()) + ")");
-  for (double f : fitnesses)
-    if (!std::isfinite(f)) throw InvalidArgument("CmaEs.fitnesses", "must be finite");
-
   // The best first; ties keep the population's order, so the ranking is deterministic.
-  std::vector<std::size_t> order(lambda_);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return fitnesses[a] > fitnesses[b]; });
+  const std::vector<std::size_t> order = rankByFitness("CmaEs", fitnesses, lambda_);
 
   // Recombination (tutorial eq. 41, c_m = 1): m += sigma * <y>_w.
   std::vector<double> yw(n_, 0.0);

@@ -1,5 +1,7 @@
 #include "FitnessPlot.h"
 
+#include <ThyrixLite/SvgGUI.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -18,29 +20,6 @@ std::string number(double x, int precision = 6) {
   const auto result =
       std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::general, precision);
   return std::string(buffer, result.ptr);
-}
-
-std::string escaped(std::string_view text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) >= 0x20) out += c;
-    }
-  }
-  return out;
 }
 
 // About five round ticks (1, 2 or 5 times a power of ten) covering [low, high].
@@ -86,8 +65,8 @@ std::string fitnessPlotSvg(std::span<const GenerationRecord> records, std::strin
       "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"640\" height=\"400\" "
       "viewBox=\"0 0 640 400\" font-family=\"sans-serif\" font-size=\"12\">\n"
       "<rect width=\"640\" height=\"400\" fill=\"white\"/>\n";
-  s += "<text x=\"320\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" + escaped(title) +
-       "</text>\n";
+  s += "<text x=\"320\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" +
+       SvgGUI::escaped(title) + "</text>\n";
   s += "<rect x=\"" + number(left) + "\" y=\"" + number(top) + "\" width=\"" + number(plotW) +
        "\" height=\"" + number(plotH) + "\" fill=\"none\" stroke=\"black\"/>\n";
   for (double t : ticks(xLow, xHigh)) {

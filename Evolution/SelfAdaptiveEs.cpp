@@ -47,16 +47,7 @@ std::span<const std::vector<double>> SelfAdaptiveEs::ask() {
 
 void SelfAdaptiveEs::tell(std::span<const double> fitnesses) {
   if (!asked_) throw InvalidArgument("SelfAdaptiveEs.fitnesses", "given before ask()");
-  if (fitnesses.size() != lambda_)
-    throw InvalidArgument("SelfAdaptiveEs.fitnesses", "must hold " + std::to_string(lambda_) +
-                                                          " values (got " +
-                                                          std::to_string(fitnesses.size()) + ")");
-  for (double f : fitnesses)
-    if (!std::isfinite(f)) throw InvalidArgument("SelfAdaptiveEs.fitnesses", "must be finite");
-  std::vector<std::size_t> order(lambda_);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return fitnesses[a] > fitnesses[b]; });
+  const std::vector<std::size_t> order = rankByFitness("SelfAdaptiveEs", fitnesses, lambda_);
   std::fill(mean_.begin(), mean_.end(), 0.0);
   double sigma = 0;
   for (std::size_t k = 0; k < mu_; ++k) {

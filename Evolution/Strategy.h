@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <iosfwd>
 #include <span>
+#include <string_view>
 #include <vector>
 
 namespace thyrix {
@@ -46,5 +47,12 @@ class Strategy {
   ///         size); the strategy is then unchanged
   virtual void restore(std::istream& in) = 0;
 };
+
+/// Checks the fitnesses told to a strategy (@p expected values, all finite) and returns the
+/// points' indices from the best to the worst, ties in the population's order (so that the
+/// ranking is deterministic).
+/// @throws InvalidArgument naming "<strategy>.fitnesses", @p strategy being the class's name
+std::vector<std::size_t> rankByFitness(std::string_view strategy, std::span<const double> fitnesses,
+                                       std::size_t expected);
 
 }  // namespace thyrix

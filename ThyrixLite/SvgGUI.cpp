@@ -436,4 +436,10 @@ void SvgGUI::save(const std::string& path) const {
 
 void SvgGUI::clear() { body_.clear(); }
 
+std::string SvgGUI::escaped(std::string_view text) {
+  std::string out;
+  appendEscaped(out, text);
+  return out;
+}
+
 }  // namespace thyrix

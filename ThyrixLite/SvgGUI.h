@@ -67,6 +67,11 @@ class SvgGUI : public GUI {
   /// The pixel position of world point @p p (x to the right, y down), unrounded.
   [[nodiscard]] Vector2 toPixels(Vector2 p) const;
 
+  /// @p text as SVG character data or attribute value: the characters &, <, >, " and '
+  /// escaped, the control characters XML 1.0 forbids dropped, malformed UTF-8 bytes replaced
+  /// by U+FFFD, so that any input gives a well-formed document.
+  [[nodiscard]] static std::string escaped(std::string_view text);
+
   /// Fill of the background rectangle (white by default).
   void setBackground(Color color) { background_ = color; }
   /// Font size of drawText (pixels, 12 by default); ignored unless positive and finite.
