@@ -146,6 +146,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
       body = std::move(composed);
       extent += 2 * halfLength + radius * 3;
     }
+    // A body longer than the box cannot start inside it: it is left out of the world.
+    if (extent >= room) continue;
     // Inside the box: the centre of mass at most the box less the reach from each wall; clear
     // of the bodies placed so far within a few tries, unless the world starts overlapping.
     const real freeX = std::max(real(0), halfWidth - extent);
