@@ -48,7 +48,7 @@ inline double boundedExp(double a) {
   return p * std::bit_cast<double>((kBits + 1023) << 52);
 }
 
-/// @p x limited to [-bound, bound], in a form the compiler turns into min and max instructions.
+/// @p x limited to [-bound, bound], written as two selects so that whole layers vectorize.
 inline double limit(double x, double bound) {
   x = x < -bound ? -bound : x;
   return x > bound ? bound : x;
