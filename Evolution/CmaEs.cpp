@@ -215,14 +215,7 @@ void CmaEs::restore(std::istream& in) {
     for (std::size_t k = 0; k < lambda_; ++k)
       for (std::size_t i = 0; i < n_; ++i) s.population_[k][i] = s.mean_[i] + s.sigma_ * s.y_[k][i];
   }
-  MTRandom::State random;
-  try {
-    random = MTRandom::State::read(in);
-  } catch (const std::exception& error) {
-    r.fail(std::string("random stream: ") + error.what());
-  }
-  in >> std::ws;  // to the next line, for what follows the state in a larger file
-  s.random_.restoreState(random);
+  s.random_.restoreState(r.randomStream());
   *this = std::move(s);
 }
 

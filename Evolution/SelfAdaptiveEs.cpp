@@ -95,14 +95,7 @@ void SelfAdaptiveEs::restore(std::istream& in) {
     s.sigmas_ = r.doubles("sigmas", lambda_);
     for (std::vector<double>& x : s.population_) x = r.doubles("x", mean_.size());
   }
-  MTRandom::State random;
-  try {
-    random = MTRandom::State::read(in);
-  } catch (const std::exception& error) {
-    r.fail(std::string("random stream: ") + error.what());
-  }
-  in >> std::ws;  // to the next line, for what follows the state in a larger file
-  s.random_.restoreState(random);
+  s.random_.restoreState(r.randomStream());
   *this = std::move(s);
 }
 

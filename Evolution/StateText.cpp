@@ -118,4 +118,15 @@ void StateReader::end() {
   }
 }
 
+MTRandom::State StateReader::randomStream() {
+  MTRandom::State random;
+  try {
+    random = MTRandom::State::read(in_);
+  } catch (const std::exception& error) {
+    fail(std::string("random stream: ") + error.what());
+  }
+  in_ >> std::ws;
+  return random;
+}
+
 }  // namespace thyrix

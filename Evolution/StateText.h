@@ -3,6 +3,8 @@
 /// @brief The text form of saved states (checkpoints): one `key values...` line per field,
 /// floating-point values in hexadecimal so that a state is restored bit for bit.
 
+#include <Tools/MTRandom.h>
+
 #include <cstdint>
 #include <iosfwd>
 #include <span>
@@ -42,6 +44,9 @@ class StateReader {
   /// The values of the next line, which must be `key count v0 v1 ...` with @p count values,
   /// all finite.
   std::vector<double> doubles(std::string_view key, std::size_t count);
+  /// The random stream's state that MTRandom::State::write() put next, and the input moved to
+  /// the next line, for what follows the state in a larger file.
+  MTRandom::State randomStream();
   /// Throws unless the input has nothing left but white space.
   void end();
   /// Throws std::runtime_error with @p problem, prefixed by the source and line.
