@@ -1,6 +1,6 @@
 // OrbitWorldWx: GUIWx showing and stepping a World that is not a Simulator: a point moving on
 // a circle of radius 3 m about (5, 5) at 1 rad/s from angle 0, drawn as a red disc of radius
-// 0.4 m. It takes the shared GUI options (--screenshot, --after, --geometry ...); orbit_test.sh
+// 0.4 m. It takes the shared GUI options (--screenshot, --after, --geometry ...); orbit_check.py
 // checks its screenshot against the closed form.
 
 #include <GUIWx/GuiOptions.h>
