@@ -277,7 +277,7 @@ namespace {
 /// Adds (@p torque, @p forceOf(k)) to the wrench k of the @p count wrenches from @p wrenches
 /// on. In double, each wrench's force as one SSE2 pair: the same additions. (GCC vectorizes
 /// the plain loop across neighbouring wrenches, 24 bytes each, whose 16-byte loads then
-/// straddle the last stores: a store-forwarding stall per link, measured slower than a call
+/// straddle the last stores: a store-forwarding stall per link, slower than a call
 /// per link.) A template, so that a float build never instantiates the pairs.
 template <class Real, class ForceOf>
 void addToEachWrench(Vector3* wrenches, std::size_t count, Real torque, ForceOf forceOf) {

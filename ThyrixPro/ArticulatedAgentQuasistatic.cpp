@@ -186,10 +186,9 @@ void ArticulatedAgentQuasistatic::integrate(real dt) {
   };
 #if defined(THYRIX_AVX_DISPATCH)
   // With AVX the same loop in VEX form (flatten: the kinematics inlined into it): the same
-  // operations, so the same bits, without SSE2's register copies, its broadcasts read from
-  // memory (31 instructions a link of a plain chain instead of 37). 128-bit vectors for GCC:
-  // with 256 it merged each capsule's direction and position into one store, built on the
-  // stack. (Clang ignores a target with that option.)
+  // operations, so the same bits, without SSE2's register copies and its broadcasts read from
+  // memory. 128-bit vectors for GCC: with 256 it merges each capsule's direction and position
+  // into one store, built on the stack. (Clang ignores a target with that option.)
 #if defined(__clang__)
   const auto runAvx = [&run]() __attribute__((target("avx"), flatten)) { run(); };
 #else

@@ -357,7 +357,7 @@ class ArticulatedBody {
       // plus (-a.y, a.x) v.y, where a.x v.x + (-a.y) v.y has the bits of a.x v.x - a.y v.y (a
       // product with a negated factor is the negated product, and x + (-y) is x - y). The
       // turned axis (-a.y, a.x) serves the link's centre of mass and its child's joint. Left to
-      // itself, GCC combined each rotation's products with a subtraction, an addition and a
+      // itself, GCC combines each rotation's products with a subtraction, an addition and a
       // blend.
       static_assert(std::is_standard_layout_v<Vector2> && sizeof(Vector2) == 2 * sizeof(Real),
                     "vectors are read and written as their coordinates");
@@ -365,7 +365,7 @@ class ArticulatedBody {
         return _mm_loadu_pd(reinterpret_cast<const Real*>(&v));
       };
       // Stored as a whole Vector2 (std::bit_cast), not through a double*: an SSE2 store may
-      // alias anything, and GCC then read the caller's fields again at every link. (A generic
+      // alias anything, and GCC then reads the caller's fields again at every link. (A generic
       // lambda: a float build never checks the cast of 16 bytes to its 8-byte Vector2.)
       const auto vectorOf = [](auto pair) { return std::bit_cast<Vector2>(pair); };
       const auto store = [&](Vector2& v, __m128d pair) { v = vectorOf(pair); };

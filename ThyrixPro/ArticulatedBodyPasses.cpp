@@ -99,12 +99,12 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
 #if defined(__SSE2__)
   if constexpr (std::is_same_v<Real, double>) {
     // inwardPass()'s chainStep (with inertias, undamped) in SSE2 pairs: (xy, xz) and (yy, zz)
-    // of the inertia, the force of the bias, beta, A h. Held as scalars, the terms of both
-    // chains did not fit in the 16 registers (measured: 20% slower than in pairs).
+    // of the inertia, the force of the bias, beta, A h: held as scalars, the terms of both
+    // chains do not fit in the 16 registers.
     //
     // articulateJoint<false>'s algebra, re-associated (so not chainStep's bits: the chain
-    // without wrenches runs here too, to keep the bits of zero wrenches). Each link was bound
-    // by two chains of ~22 cycles: the division's (d -> 1/d -> h.Ah - g^2/d -> own + that ->
+    // without wrenches runs here too, to keep the bits of zero wrenches). Written plainly, each
+    // link waits on two long chains: the division's (d -> 1/d -> h.Ah - g^2/d -> own + that ->
     // next d) and the one through beta, the carried (yy, zz), yz, A h and h.Ah into the next
     // d. Here the child builds the parent's inertia D_p = M_p + D_i - b b^T / d_i with the
     // parent's own terms M_p added first and 1 / d_i multiplied last:
@@ -175,7 +175,7 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
       };
       const Vector3* const perLink = wrenchKind == 1 ? w.wrenches->perBody + 1 : nullptr;
       // The uniform wrench is read in the loop (from memory, as an operand): kept in
-      // registers, it left too few for the terms carried.
+      // registers, it would leave too few for the terms carried.
       const Vector3& uniform = w.wrenches->link;
       // Link i's articulated inertia D_i before its joint, as the child left it: xx, b = (xy,
       // xz), (yy, zz), and yz (low lane; +0 at the leaf and never -0, as x - y is -0 only for
@@ -192,7 +192,7 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
         const std::size_t p = i - 1;
         const Real inverseD = 1 / dxx;
         // What does not wait for the division first, each term used as soon as it is known:
-        // GCC allocates registers in about this order, and terms kept longer went to the stack
+        // GCC allocates registers in about this order, and terms kept longer go to the stack
         // (h.Ah, on the division's chain, and the carried force).
         const __m128d r = pairOf(shifts[i].x);
         const Real g = crossOf(r, b);
@@ -220,8 +220,8 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
         t.gamma = gamma;
         _mm_storeu_pd(reinterpret_cast<Real*>(&t.beta), beta);
         // passBias(i, carried - translateForceBack(w, c), tau); crossOf(centre, wf) written
-        // out to use the swapped force. The shift is read again: kept from the start, it took
-        // a register the bias terms needed (GCC kept the carried force on the stack).
+        // out to use the swapped force. The shift is read again: kept from the start, it would
+        // take a register the bias terms need.
         Real pn = moment;
         __m128d pf = force;
         if constexpr (wrenchKind != 0) {
@@ -243,7 +243,7 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
       *w.biasCarried = {moment, low(force), high(force)};
     };
     // In VEX form with AVX: the same operations (no fused multiply-add), so the same bits,
-    // with fewer instructions (measured: 76 a link, 102 in SSE2, which copies registers).
+    // without the register copies of SSE2's two-operand form.
     const auto run = [&](auto kind) {
 #if defined(THYRIX_AVX_DISPATCH)
       const auto sweepAvx = [&sweep](const Sweep& w, auto k) __attribute__((target("avx"))) {
@@ -337,8 +337,8 @@ void ArticulatedBody::inwardPass(const Wrenches& wrenches, const real* torques) 
   for (std::size_t i = plainChain ? 0 : links_.size(); i-- > 0;) {
     const std::size_t self = i + 1;
     if (!general && inChain_[i] != 0) {
-      // chainStep(i, ...) with the test of carriedBias() (measured: in this loop, calls of
-      // chainStep cost the plain chain's loop above 2 instructions a link).
+      // chainStep(i, ...) with the test of carriedBias(), written out: calls of chainStep here
+      // too make the compiler treat the plain chain's loop above less well.
       if constexpr (withInertias) {
         inertiaCarried = articulateJoint<damped>(i, ownInertia(i) + inertiaCarried);
       }
@@ -450,8 +450,8 @@ void ArticulatedBody::biasAndOutwardPasses(const Wrenches& wrenches, const real*
     // outwardStep() with beta_i . v'_i written out by one link: v'_i's linear part is the
     // grandparent's plus omega'' x r_{i-1}, so beta_i . v'_i = beta_i . (grandparent's) +
     // omega'' (r_{i-1} x beta_i). Link i then waits on its parent's omega' for a multiply and
-    // an add only (not also a subtraction); the longest chain left, through the linear
-    // velocities, takes about 7 cycles a link instead of 9 (measured: chain1000 3% faster).
+    // an add only (not also a subtraction), and the longest chain left runs through the
+    // linear velocities.
     // The joint rate is the same sum less gamma omega'. The results differ in the last bits.
     Vector3 grandparent = v0;
     previous = outwardStep(0, v0);

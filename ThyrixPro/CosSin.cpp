@@ -14,8 +14,7 @@ void kernelLoop(std::span<const real> angles, std::span<Vector2> out) {
 }
 
 #if defined(THYRIX_AVX_DISPATCH)
-/// The same loop for AVX2: four angles at a time (the forward kinematics' kernel took about
-/// 40 instructions a link in SSE2, 19 in AVX2). The same operations in each lane, and AVX2
+/// The same loop for AVX2: four angles at a time. The same operations in each lane, and AVX2
 /// brings no fused multiply-add (that is FMA's), so the same bits.
 [[gnu::target("avx2")]] void kernelLoopAvx2(std::span<const real> angles, std::span<Vector2> out) {
   for (std::size_t k = 0; k < angles.size(); ++k) out[k] = detail::cosSinReduced(angles[k]);

@@ -40,8 +40,7 @@ inline Vector2 cosSinReduced(real a) {
   // Horner's rule for the first two terms (whose roundings decide the accuracy), Estrin's
   // scheme in u = r^2 for the rest: pairs of terms, then pairs of pairs, with u^2 and u^4
   // computed alongside. The same terms, but the longest chain of dependent operations is about
-  // 9 of them, not 17: a loop over many angles waits on that latency (about 10 cycles an angle
-  // with Horner's rule alone).
+  // 9 of them, not 17: a loop over many angles waits on that latency.
   const double u = r2;
   const double u2 = u * u;
   const double u4 = u2 * u2;

@@ -43,8 +43,8 @@ TEST_P(AllocationTest, PileOf2000CirclesStepsWithoutAllocating) {
 
 TEST_P(AllocationTest, GrowingPileWithoutReservedBuffersAllocatesOnlyToGrowThem) {
   // Without reserveContacts, the buffers grow with the contacts: geometrically, so a pile whose
-  // contacts keep increasing step after step allocates a few times per buffer (39 in all when
-  // written), not once a step (a buffer resized to each new largest island exactly: 392).
+  // contacts keep increasing step after step allocates a few times per buffer, not once a step
+  // (as a buffer resized to each new largest island exactly would).
   Simulator simulator(real(1) / 60);
   simulator.setContactSolver(GetParam());
   const auto circles = scenes::addPile(simulator, 1000, 1);

@@ -31,9 +31,9 @@ class ContainmentTest : public ::testing::TestWithParam<ContactSolverKind> {};
 // closed box, its right end touching, its left end 0.04 higher (out of the speculative margin).
 // A circle 100 times heavier, pushed down at 2.9 m/s (gravity and 10 N), presses on it 0.1 left
 // of the right end: the capsule pivots about that end, and the left end, 27 times farther from
-// the pivot than the push, swings down many margins in the first step. Before the fix no floor
-// contact existed for that end and its core went 0.09 below the floor line; the floor must
-// hold it: it sinks at most a margin of its radius into the floor, and lies flat.
+// the pivot than the push, swings down many margins in the first step. Without the containment
+// checks no floor contact exists for that end and its core goes 0.09 below the floor line; the
+// floor must hold it: it sinks at most a margin of its radius into the floor, and lies flat.
 TEST_P(ContainmentTest, LightLeverPushedNearItsPivotStaysAboveTheFloor) {
   Simulator simulator(real(0.01));
   simulator.setContactSolver(GetParam());
@@ -70,9 +70,9 @@ TEST_P(ContainmentTest, LightLeverPushedNearItsPivotStaysAboveTheFloor) {
 
 // Seeded random worlds (tests/support/BoxedWorld.h): 1 to 40 circles and capsules of masses
 // 1e-2 to 1e2 in a closed box, under gravity and smooth pushes of at most 2 m/s per unit mass,
-// 1000 steps. Before the fix 12 of these 32 worlds (Baraff) and 18 (Gauss-Seidel) put a
-// shape's core past a wall. Every shape must stay inside (its core never past a wall line) and
-// every body's speed finite and below a box's width per step.
+// 1000 steps. Without the containment checks 12 of these 32 worlds (Baraff) and 18 (Gauss-Seidel)
+// put a shape's core past a wall. Every shape must stay inside (its core never past a wall line)
+// and every body's speed finite and below a box's width per step.
 TEST_P(ContainmentTest, RandomWorldsWithLargeMassRatiosStayInTheirBox) {
   int leaks = 0;
   for (std::uint32_t seed = 32; seed < 64; ++seed) {
@@ -88,12 +88,12 @@ TEST_P(ContainmentTest, RandomWorldsWithLargeMassRatiosStayInTheirBox) {
 }
 
 // The seeds of the sweep above (over seeds 0 to 999 in double, 0 to 299 in float) whose worlds
-// still put a shape's core past a wall after the re-detection and the walls held after
-// Gauss-Seidel: a light capsule turned by radians in one step by Gauss-Seidel's error between
+// put a shape's core past a wall with re-detection and held walls alone, without divided
+// steps: a light capsule turned by radians in one step by Gauss-Seidel's error between
 // heavy bodies (Baraff hands islands of more than 32 contacts to it), whose linearised wall
 // contact its end's arc departs from. In double 17 of 1000 worlds leaked with Baraff and 23
 // with Gauss-Seidel, in float 7 and 3 of 300; the first of them each (all of them in float)
-// must stay inside now that such steps are divided.
+// must stay inside, such steps being divided.
 TEST_P(ContainmentTest, WorldsWhoseLightBodiesTurnByRadiansStayInTheirBox) {
   const bool baraff = GetParam() == ContactSolverKind::Baraff;
   std::vector<std::uint32_t> seeds;
