@@ -101,19 +101,25 @@ Box2DArena::Box2DArena(const ArenaLayout& layout)
   addWall({s / 2, s + t}, {s / 2 + 2 * t, t});
   addWall({-t, s / 2}, {t, s / 2 + 2 * t});
   addWall({s + t, s / 2}, {t, s / 2 + 2 * t});
-  for (int i = 0; i < 2; ++i) agent_[i] = &addCircle(layout.agent[i], layout.agentRadius);
-  b2DistanceJointDef joint;
-  // Initialize makes the joint rigid at the current distance (stiffness 0, min = max length);
-  // collideConnected stays false, like the bodies of a Thyrix elastoid.
-  joint.Initialize(agent_[0], agent_[1], agent_[0]->GetPosition(), agent_[1]->GetPosition());
-  world_->CreateJoint(&joint);
+  for (const AgentLayout& a : layout.agents) {
+    b2Body* circles[2] = {nullptr, nullptr};
+    for (int i = 0; i < 2; ++i) {
+      circles[i] = &addCircle(a.circle[i], layout.agentRadius);
+      agents_.push_back(circles[i]);
+    }
+    b2DistanceJointDef joint;
+    // Initialize makes the joint rigid at the current distance (stiffness 0, min = max
+    // length); collideConnected stays false, like the bodies of a Thyrix elastoid.
+    joint.Initialize(circles[0], circles[1], circles[0]->GetPosition(), circles[1]->GetPosition());
+    world_->CreateJoint(&joint);
+  }
   for (const Point p : layout.balls) addCircle(p, layout.ballRadius);
 }
 
 void Box2DArena::step() {
-  const Point direction = push_.next();
-  const b2Vec2 force = single(layout_.pushForce) * vec(direction);
-  for (b2Body* body : agent_) body->ApplyForceToCenter(force, true);
+  push_.next();
+  for (std::size_t i = 0; i < agents_.size(); ++i)
+    agents_[i]->ApplyForceToCenter(single(layout_.pushForce) * vec(push_.direction(i / 2)), true);
   stepWorld();
 }
 

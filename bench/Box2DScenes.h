@@ -55,7 +55,7 @@ class Box2DScene {
   float timestep_;
 };
 
-/// arena in Box2D: the agent's circles are joined by a rigid distance joint.
+/// arena (and crowd) in Box2D: each agent's circles are joined by a rigid distance joint.
 class Box2DArena : public Box2DScene {
  public:
   explicit Box2DArena(const ArenaLayout& layout);
@@ -63,7 +63,7 @@ class Box2DArena : public Box2DScene {
 
  private:
   ArenaLayout layout_;
-  b2Body* agent_[2] = {nullptr, nullptr};
+  std::vector<b2Body*> agents_;  ///< the circles of agent k at 2k and 2k + 1
   ArenaPush push_{layout_};
 };
 

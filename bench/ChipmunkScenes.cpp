@@ -123,18 +123,24 @@ ChipmunkArena::ChipmunkArena(const ArenaLayout& layout)
   addWall(-t, s, s + t, s + t);
   addWall(-t, -t, 0, s + t);
   addWall(s, -t, s + t, s + t);
-  for (int i = 0; i < 2; ++i) agent_[i] = &addCircle(layout.agent[i], layout.agentRadius);
-  // A pin joint keeps the anchors at their initial distance; its bodies do not collide, like
-  // the bodies of a Thyrix elastoid.
-  cpConstraint& joint = addConstraint(cpPinJointNew(agent_[0], agent_[1], cpvzero, cpvzero));
-  cpConstraintSetCollideBodies(&joint, cpFalse);
+  for (const AgentLayout& a : layout.agents) {
+    cpBody* circles[2] = {nullptr, nullptr};
+    for (int i = 0; i < 2; ++i) {
+      circles[i] = &addCircle(a.circle[i], layout.agentRadius);
+      agents_.push_back(circles[i]);
+    }
+    // A pin joint keeps the anchors at their initial distance; its bodies do not collide, like
+    // the bodies of a Thyrix elastoid.
+    cpConstraint& joint = addConstraint(cpPinJointNew(circles[0], circles[1], cpvzero, cpvzero));
+    cpConstraintSetCollideBodies(&joint, cpFalse);
+  }
   for (const Point p : layout.balls) addCircle(p, layout.ballRadius);
 }
 
 void ChipmunkArena::step() {
-  const Point direction = push_.next();
-  const cpVect force = cpvmult(vec(direction), layout_.pushForce);
-  for (cpBody* body : agent_) cpBodySetForce(body, force);
+  push_.next();
+  for (std::size_t i = 0; i < agents_.size(); ++i)
+    cpBodySetForce(agents_[i], cpvmult(vec(push_.direction(i / 2)), layout_.pushForce));
   stepSpace();
 }
 

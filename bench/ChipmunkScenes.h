@@ -52,7 +52,8 @@ class ChipmunkScene {
   std::vector<cpConstraint*> constraints_;
 };
 
-/// arena in Chipmunk: the agent's circles are joined by a pin joint (a rigid distance).
+/// arena (and crowd) in Chipmunk: each agent's circles are joined by a pin joint (a rigid
+/// distance).
 class ChipmunkArena : public ChipmunkScene {
  public:
   explicit ChipmunkArena(const ArenaLayout& layout);
@@ -60,7 +61,7 @@ class ChipmunkArena : public ChipmunkScene {
 
  private:
   ArenaLayout layout_;
-  cpBody* agent_[2] = {nullptr, nullptr};
+  std::vector<cpBody*> agents_;  ///< the circles of agent k at 2k and 2k + 1
   ArenaPush push_{layout_};
 };
 

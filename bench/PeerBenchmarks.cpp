@@ -1,6 +1,6 @@
-// PeerBenchmarks: the scenes of issue 7 in Thyrix and, when they were found at configure
-// time, in Box2D 2.4 and Chipmunk 7, from identical layouts (PeerScenes.h). Each benchmark
-// runs a whole scene once per repetition (->Iterations(1)) and reports, as counters:
+// PeerBenchmarks: the scenes of issues 7 and 27 in Thyrix and, when they were found at
+// configure time, in Box2D 2.4, Box2D v3 and Chipmunk 7, from identical layouts (PeerScenes.h).
+// Each benchmark runs a whole scene once per repetition (->Iterations(1)) and reports, as counters:
 //   us_per_step, steps_per_s    CPU time of the stepping thread over the timed steps only (the
 //                               world is built untimed; this is also the benchmark's time);
 //   wall_us_per_step            the same in wall-clock time (it grows with the machine's load);
@@ -30,6 +30,9 @@
 #ifdef THYRIX_HAVE_BOX2D
 #include "Box2DScenes.h"
 #endif
+#ifdef THYRIX_HAVE_BOX2D_V3
+#include "Box2DV3Scenes.h"
+#endif
 #ifdef THYRIX_HAVE_CHIPMUNK
 #include "ChipmunkScenes.h"
 #endif
@@ -56,6 +59,7 @@ namespace {
 /// How long each scene runs (issue 7's numbers; --quick divides them).
 struct Config {
   long arenaSteps = 100000;
+  long crowdSteps = 20000;
   long pileWarmupSteps = 100;
   long pileSteps = 500;
   long chainSteps = 2000;
@@ -76,6 +80,7 @@ struct Config {
 Config quickConfig() {
   Config config;
   config.arenaSteps = 5000;
+  config.crowdSteps = 1000;
   config.pileWarmupSteps = 20;
   config.pileSteps = 50;
   config.chainSteps = 200;
@@ -159,14 +164,28 @@ void report(benchmark::State& state, const Measure& m, std::uint64_t hash) {
 }
 
 template <class Scene, class... Args>
-void arena(benchmark::State& state, const Config& config, int balls, Args... args) {
-  const ArenaLayout layout = arenaLayout(balls, config.seed);
+void arena(benchmark::State& state, const ArenaLayout& layout, long steps, int every,
+           Args... args) {
   for (auto _ : state) {
     Scene scene(layout, args...);
-    const Measure m = run(scene, config.arenaSteps, config.arenaSampleEvery);
+    const Measure m = run(scene, steps, every);
     state.SetIterationTime(m.seconds);
     report(state, m, scene.stateHash());
   }
+  state.counters["agents"] = static_cast<double>(layout.agents.size());
+}
+
+template <class Scene, class... Args>
+void arena(benchmark::State& state, const Config& config, int balls, Args... args) {
+  arena<Scene>(state, arenaLayout(balls, config.seed), config.arenaSteps, config.arenaSampleEvery,
+               args...);
+}
+
+/// crowd (issue 27): 10 agents of the arena and 1000 balls in a 40 x 40 m arena.
+template <class Scene, class... Args>
+void crowd(benchmark::State& state, const Config& config, Args... args) {
+  arena<Scene>(state, crowdLayout(10, 1000, 40, config.seed), config.crowdSteps,
+               config.arenaSampleEvery, args...);
 }
 
 template <class Scene, class... Args>
@@ -352,10 +371,24 @@ void registerAll(const Config& config) {
 #ifdef THYRIX_HAVE_BOX2D
     add(scene + "/box2d", [=](benchmark::State& s) { arena<Box2DArena>(s, config, balls); });
 #endif
+#ifdef THYRIX_HAVE_BOX2D_V3
+    add(scene + "/box2d_v3", [=](benchmark::State& s) { arena<Box2DV3Arena>(s, config, balls); });
+#endif
 #ifdef THYRIX_HAVE_CHIPMUNK
     add(scene + "/chipmunk", [=](benchmark::State& s) { arena<ChipmunkArena>(s, config, balls); });
 #endif
   }
+  add("crowd/thyrix", [=](benchmark::State& s) { crowd<ThyrixArena>(s, config, baraff); });
+  add("crowd/thyrix_gs", [=](benchmark::State& s) { crowd<ThyrixArena>(s, config, gaussSeidel); });
+#ifdef THYRIX_HAVE_BOX2D
+  add("crowd/box2d", [=](benchmark::State& s) { crowd<Box2DArena>(s, config); });
+#endif
+#ifdef THYRIX_HAVE_BOX2D_V3
+  add("crowd/box2d_v3", [=](benchmark::State& s) { crowd<Box2DV3Arena>(s, config); });
+#endif
+#ifdef THYRIX_HAVE_CHIPMUNK
+  add("crowd/chipmunk", [=](benchmark::State& s) { crowd<ChipmunkArena>(s, config); });
+#endif
 #ifdef THYRIX_HAVE_SPHERUS
   add("spherus/thyrix", [=](benchmark::State& s) { spherus(s, config); });
 #endif
@@ -368,6 +401,9 @@ void registerAll(const Config& config) {
         [=](benchmark::State& s) { pile<ThyrixPile>(s, config, count, gaussSeidel); });
 #ifdef THYRIX_HAVE_BOX2D
     add(scene + "/box2d", [=](benchmark::State& s) { pile<Box2DPile>(s, config, count); });
+#endif
+#ifdef THYRIX_HAVE_BOX2D_V3
+    add(scene + "/box2d_v3", [=](benchmark::State& s) { pile<Box2DV3Pile>(s, config, count); });
 #endif
 #ifdef THYRIX_HAVE_CHIPMUNK
     add(scene + "/chipmunk", [=](benchmark::State& s) { pile<ChipmunkPile>(s, config, count); });
@@ -382,6 +418,9 @@ void registerAll(const Config& config) {
         [=](benchmark::State& s) { chain<ThyrixChain>(s, config, links, gaussSeidel); });
 #ifdef THYRIX_HAVE_BOX2D
     add(scene + "/box2d", [=](benchmark::State& s) { chain<Box2DChain>(s, config, links); });
+#endif
+#ifdef THYRIX_HAVE_BOX2D_V3
+    add(scene + "/box2d_v3", [=](benchmark::State& s) { chain<Box2DV3Chain>(s, config, links); });
 #endif
 #ifdef THYRIX_HAVE_CHIPMUNK
     add(scene + "/chipmunk", [=](benchmark::State& s) { chain<ChipmunkChain>(s, config, links); });

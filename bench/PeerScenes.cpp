@@ -10,36 +10,70 @@
 namespace thyrix::peers {
 
 double ArenaLayout::linkLength() const {
-  return std::hypot(agent[1].x - agent[0].x, agent[1].y - agent[0].y);
+  const AgentLayout& a = agents.front();
+  return std::hypot(a.circle[1].x - a.circle[0].x, a.circle[1].y - a.circle[0].y);
 }
 
-ArenaLayout arenaLayout(int balls, std::uint32_t seed) {
-  ArenaLayout layout;
-  const double middle = layout.size / 2;
-  layout.agent[0] = {middle - 0.3, middle};
-  layout.agent[1] = {middle + 0.3, middle};
-  // SpherusSimulator's rejection sampling, draw for draw (x then y from one stream), so that
-  // the spherus scene has these very balls: keep clear of the agent's reach (half its longest
-  // link, its radius and a ball diameter) and 1.5 diameters from every ball placed before.
+namespace {
+
+/// SpherusSimulator's rejection sampling, draw for draw (x then y from one stream), so that
+/// the spherus scene has the arena's very balls: keep clear of every agent's reach (half its
+/// longest link, its radius and a ball diameter) and 1.5 diameters from every ball placed
+/// before.
+void placeBalls(ArenaLayout& layout, int balls, std::uint32_t seed) {
   MTRandom random(seed);
   const double r = layout.ballRadius;
   const double maxLinkLength = 1;
   const double clearance = maxLinkLength / 2 + layout.agentRadius + 2 * r;
+  const auto near = [](double x, double y, Point q, double distance) {
+    return std::hypot(x - q.x, y - q.y) < distance;
+  };
   while (static_cast<int>(layout.balls.size()) < balls) {
     const double x = random.uniform(2 * r, layout.size - 2 * r);
     const double y = random.uniform(2 * r, layout.size - 2 * r);
-    if (std::hypot(x - middle, y - middle) < clearance) continue;
+    if (std::any_of(layout.agents.begin(), layout.agents.end(), [&](const AgentLayout& a) {
+          const Point middle{(a.circle[0].x + a.circle[1].x) / 2,
+                             (a.circle[0].y + a.circle[1].y) / 2};
+          return near(x, y, middle, clearance);
+        }))
+      continue;
     if (std::any_of(layout.balls.begin(), layout.balls.end(),
-                    [&](Point q) { return std::hypot(x - q.x, y - q.y) < 3 * r; }))
+                    [&](Point q) { return near(x, y, q, 3 * r); }))
       continue;
     layout.balls.push_back({x, y});
   }
+}
+
+/// An agent centred at @p middle, 0.6 m long along x.
+AgentLayout agentAt(Point middle) {
+  return {{{middle.x - 0.3, middle.y}, {middle.x + 0.3, middle.y}}};
+}
+
+}  // namespace
+
+ArenaLayout arenaLayout(int balls, std::uint32_t seed) {
+  ArenaLayout layout;
+  layout.agents.push_back(agentAt({layout.size / 2, layout.size / 2}));
+  placeBalls(layout, balls, seed);
   return layout;
 }
 
-Point arenaPushDirection(const ArenaLayout& layout, long step) {
+ArenaLayout crowdLayout(int agents, int balls, double size, std::uint32_t seed) {
+  ArenaLayout layout;
+  layout.size = size;
+  const int columns = std::min(agents, 5);
+  const int rows = (agents + columns - 1) / columns;
+  for (int k = 0; k < agents; ++k)
+    layout.agents.push_back(
+        agentAt({size * (k % columns + 0.5) / columns, size * (k / columns + 0.5) / rows}));
+  placeBalls(layout, balls, seed);
+  return layout;
+}
+
+Point arenaPushDirection(const ArenaLayout& layout, long step, std::size_t agent) {
   const double goldenAngle = std::numbers::pi * (3 - std::sqrt(5.0));
-  const double angle = goldenAngle * static_cast<double>(step / layout.stepsPerTurn);
+  const double turns = static_cast<double>(step / layout.stepsPerTurn + static_cast<long>(agent));
+  const double angle = goldenAngle * turns;
   return {std::cos(angle), std::sin(angle)};
 }
 

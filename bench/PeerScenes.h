@@ -32,47 +32,62 @@ inline constexpr double peerMass = 0.1;
 /// Quasistatic mass of a Thyrix body standing for a peer body of peerMass (N s/m).
 inline constexpr double thyrixMass = peerDamping * peerMass;
 
-/// arena: a 10 x 10 m walled arena, an agent of two circles joined at a distance, and balls.
-/// The layout is the one SpherusSimulator builds from the same seed, so the arena and the
-/// spherus scenes differ only by Spherus's sensors and controller.
+/// The agent of the arena scenes: two circles joined at a distance (Spherus's body).
+struct AgentLayout {
+  Point circle[2];  ///< centres of the two circles
+};
+
+/// arena: a walled square arena (10 x 10 m), agents of two circles joined at a distance, and
+/// balls. With one agent, the layout is the one SpherusSimulator builds from the same seed, so
+/// the arena and the spherus scenes differ only by Spherus's sensors and controller.
 struct ArenaLayout {
-  double size = 10;           ///< side of the arena; walls at 0 and size
-  double agentRadius = 0.25;  ///< radius of each agent circle
-  Point agent[2];             ///< centres of the two agent circles
-  double ballRadius = 0.2;    ///< radius of the balls
-  std::vector<Point> balls;   ///< centres of the balls
-  double timestep = 0.01;     ///< s
-  double pushForce = 1;       ///< force on each agent circle (N)
-  long stepsPerTurn = 1000;   ///< the push turns by the golden angle this often
-  /// Distance between the agent circles' centres (the rest length of the joint or link).
+  double size = 10;                 ///< side of the arena; walls at 0 and size
+  double agentRadius = 0.25;        ///< radius of each agent circle
+  std::vector<AgentLayout> agents;  ///< the agents, each 0.6 m long along x
+  double ballRadius = 0.2;          ///< radius of the balls
+  std::vector<Point> balls;         ///< centres of the balls
+  double timestep = 0.01;           ///< s
+  double pushForce = 1;             ///< force on each agent circle (N)
+  long stepsPerTurn = 1000;         ///< the push turns by the golden angle this often
+  /// Distance between an agent's circles' centres (the rest length of the joint or link).
   [[nodiscard]] double linkLength() const;
 };
 
-/// The arena of SpherusSimulator for @p seed (1 in the benchmarks): the agent at (4.7, 5) and
+/// The arena of SpherusSimulator for @p seed (1 in the benchmarks): one agent at (4.7, 5) and
 /// (5.3, 5), @p balls balls placed at random without overlap by SpherusSimulator's rule.
 ArenaLayout arenaLayout(int balls, std::uint32_t seed);
 
-/// The direction of the push on the agent at step @p step: +x, turned by the golden angle
-/// every `stepsPerTurn` steps (so it never repeats and sweeps every direction).
-Point arenaPushDirection(const ArenaLayout& layout, long step);
+/// crowd (issue 27): @p agents agents and @p balls balls in a walled arena of side @p size.
+/// The agents sit at the centres of a grid of cells (5 columns), the balls are placed by
+/// arenaLayout's rule, clear of every agent.
+ArenaLayout crowdLayout(int agents, int balls, double size, std::uint32_t seed);
+
+/// The direction of the push on agent @p agent at step @p step: +x turned by @p agent golden
+/// angles, then by one more every `stepsPerTurn` steps (so it never repeats, sweeps every
+/// direction, and the agents of a crowd head different ways).
+Point arenaPushDirection(const ArenaLayout& layout, long step, std::size_t agent);
 
 /// The push directions of arenaPushDirection, step after step, computed only when the push
 /// turns: the harness's own trigonometry is not what the engines are timed for (per step, it
 /// was 4% of Thyrix's arena step).
 class ArenaPush {
  public:
-  explicit ArenaPush(const ArenaLayout& layout) : layout_(layout) {}
-  /// The direction for the next step.
-  Point next() {
-    if (step_ % layout_.stepsPerTurn == 0) direction_ = arenaPushDirection(layout_, step_);
+  explicit ArenaPush(const ArenaLayout& layout)
+      : layout_(layout), directions_(layout.agents.size()) {}
+  /// Moves on to the next step (the first at the first call): direction() is then its pushes.
+  void next() {
+    if (step_ % layout_.stepsPerTurn == 0)
+      for (std::size_t k = 0; k < directions_.size(); ++k)
+        directions_[k] = arenaPushDirection(layout_, step_, k);
     ++step_;
-    return direction_;
   }
+  /// The direction of the push on agent @p agent at this step.
+  [[nodiscard]] Point direction(std::size_t agent) const { return directions_[agent]; }
 
  private:
   ArenaLayout layout_;
   long step_ = 0;
-  Point direction_;
+  std::vector<Point> directions_;
 };
 
 /// pileN: circles of radius 0.5 in a grid of ceil(sqrt N) columns at pitch 1.2 with x jitter

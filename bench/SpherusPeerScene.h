@@ -46,8 +46,8 @@ inline bool sameArena(const ArenaLayout& layout, std::uint32_t seed) {
            std::abs(static_cast<double>(a.y) - b.y) < 1e-6;
   };
   const Spherus& agent = spherus.simulator().spherus();
-  if (!close(agent.leftCircle().r, layout.agent[0]) ||
-      !close(agent.rightCircle().r, layout.agent[1]))
+  if (layout.agents.size() != 1 || !close(agent.leftCircle().r, layout.agents[0].circle[0]) ||
+      !close(agent.rightCircle().r, layout.agents[0].circle[1]))
     return false;
   const auto& balls = spherus.simulator().obstacles();
   if (balls.size() != layout.balls.size()) return false;

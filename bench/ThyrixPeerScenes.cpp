@@ -21,15 +21,19 @@ ThyrixArena::ThyrixArena(const ArenaLayout& layout, ContactSolverKind solver)
     : layout_(layout), simulator_(static_cast<real>(layout.timestep)) {
   simulator_.setContactSolver(solver);
   scenes::addWalls(simulator_, static_cast<real>(layout.size), static_cast<real>(layout.size));
-  auto agent = std::make_unique<Elastoid>();
-  for (int i = 0; i < 2; ++i) {
-    agent_[i] = &agent->addBody(std::make_unique<Circle>(static_cast<real>(layout.agentRadius),
-                                                         static_cast<real>(thyrixMass)));
-    agent_[i]->r = vector(layout.agent[i]);
+  for (const AgentLayout& a : layout.agents) {
+    auto agent = std::make_unique<Elastoid>();
+    Circle* circles[2] = {nullptr, nullptr};
+    for (int i = 0; i < 2; ++i) {
+      circles[i] = &agent->addBody(std::make_unique<Circle>(static_cast<real>(layout.agentRadius),
+                                                            static_cast<real>(thyrixMass)));
+      circles[i]->r = vector(a.circle[i]);
+      agents_.push_back(circles[i]);
+    }
+    agent->addLink(*circles[0], {}, *circles[1], {}, static_cast<real>(layout.linkLength()),
+                   static_cast<real>(linkStiffness));
+    simulator_.registerObject(std::move(agent));
   }
-  agent->addLink(*agent_[0], {}, *agent_[1], {}, static_cast<real>(layout.linkLength()),
-                 static_cast<real>(linkStiffness));
-  simulator_.registerObject(std::move(agent));
   for (const Point p : layout.balls) {
     auto& ball = simulator_.registerObject(std::make_unique<Circle>(
         static_cast<real>(layout.ballRadius), static_cast<real>(thyrixMass)));
@@ -38,9 +42,10 @@ ThyrixArena::ThyrixArena(const ArenaLayout& layout, ContactSolverKind solver)
 }
 
 void ThyrixArena::step() {
-  const Point direction = push_.next();
-  const Vector2 force = vector(direction) * static_cast<real>(layout_.pushForce);
-  for (Circle* circle : agent_) circle->externalForce += force;
+  push_.next();
+  for (std::size_t i = 0; i < agents_.size(); ++i)
+    agents_[i]->externalForce +=
+        vector(push_.direction(i / 2)) * static_cast<real>(layout_.pushForce);
   simulator_.advanceTime();
 }
 

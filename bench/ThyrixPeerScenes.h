@@ -14,9 +14,9 @@
 
 namespace thyrix::peers {
 
-/// arena in Thyrix: the agent is an Elastoid of two circles joined by a stiff ElasticLink
-/// (Spherus's body without its sensors and controller), the balls are circles, the walls are
-/// borders; every body has the quasistatic mass thyrixMass.
+/// arena (and crowd) in Thyrix: each agent is an Elastoid of two circles joined by a stiff
+/// ElasticLink (Spherus's body without its sensors and controller), the balls are circles, the
+/// walls are borders; every body has the quasistatic mass thyrixMass.
 class ThyrixArena {
  public:
   /// Stiffness of the agent's link (N/m): stiff next to the 1 N pushes (a 1 N pull stretches
@@ -24,7 +24,7 @@ class ThyrixArena {
   static constexpr double linkStiffness = 200;
 
   ThyrixArena(const ArenaLayout& layout, ContactSolverKind solver);
-  /// Pushes the agent, then advances the world by one step.
+  /// Pushes the agents, then advances the world by one step.
   void step();
   /// This step's contact points.
   [[nodiscard]] std::size_t contactCount() const { return simulator_.contacts.size(); }
@@ -34,7 +34,7 @@ class ThyrixArena {
  private:
   ArenaLayout layout_;
   Simulator simulator_;
-  Circle* agent_[2] = {nullptr, nullptr};
+  std::vector<Circle*> agents_;  ///< the circles of agent k at 2k and 2k + 1
   ArenaPush push_{layout_};
 };
 
