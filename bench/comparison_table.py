@@ -5,21 +5,22 @@ Usage: comparison_table.py RESULTS.json
 
 Reads the median of each benchmark when repetitions were run (the single run otherwise) and
 prints: time per step, scene x engine, with the ratio to Thyrix; the details of every run;
-the batch; and the goals of issue 7, met or not. Python 3 standard library only.
+the batch; and the goals of issues 7 and 27, met or not. Python 3 standard library only.
 """
 
 import json
 import math
 import sys
 
-ENGINES = ["thyrix", "thyrix_gs", "box2d", "chipmunk"]
+ENGINES = ["thyrix", "thyrix_gs", "box2d_v3", "box2d", "chipmunk"]
 ENGINE_TITLES = {
     "thyrix": "Thyrix (Baraff)",
     "thyrix_gs": "Thyrix (Gauss-Seidel)",
+    "box2d_v3": "Box2D v3",
     "box2d": "Box2D 2.4.1",
     "chipmunk": "Chipmunk 7.0.3",
 }
-SCENES = ["arena", "arena80", "arena160", "spherus", "pile1000", "pile10000", "chain10",
+SCENES = ["arena", "arena80", "arena160", "crowd", "spherus", "pile1000", "pile10000", "chain10",
           "chain100", "chain1000"]
 
 
@@ -241,6 +242,34 @@ def main():
                  f"{fmt(s, 3)}x{note}", s >= 1.9)
         same = same and value(paired, "identical") != 0
         goal("batch: results identical to the 1-thread run", "yes" if same else "NO", same)
+
+    print("\n### Goals of issue 27\n")
+    print("The issue's ratios are to Thyrix with its Gauss-Seidel solver (to Thyrix with Baraff, "
+          "the default, in parentheses).\n")
+    print("| goal | measured | met |")
+    print("|---|---|---|")
+
+    def ratio_gs(scene, engine):
+        t = value(runs.get((scene, engine), {}), "us_per_step")
+        base = value(runs.get((scene, "thyrix_gs"), {}), "us_per_step")
+        return t / base if t and base else None
+
+    for scene, target in [("arena", 20), ("arena160", 5), ("pile1000", 3), ("pile10000", 10)]:
+        r = ratio_gs(scene, "box2d_v3")
+        rb = ratio(scene, "box2d_v3")
+        goal(f"{scene}: Thyrix at least {target}x faster than Box2D v3",
+             f"{fmt(r, 2)}x ({fmt(rb, 2)}x)" if r else "not run", r >= target if r else None)
+    r = ratio("chain1000", "box2d_v3")
+    goal("chain1000: Box2D v3 (no goal, for the table)", f"{fmt(r, 2)}x" if r else "not run", None)
+    # Per agent: the crowd has 10 agents (and 50 times the balls) where the arena has one.
+    for engine in ["thyrix", "thyrix_gs"]:
+        crowd = runs.get(("crowd", engine), {})
+        t = value(crowd, "us_per_step")
+        agents = value(crowd, "agents")
+        base = value(runs.get(("arena", engine), {}), "us_per_step")
+        r = t / agents / base if t and agents and base else None
+        goal(f"crowd ({ENGINE_TITLES[engine]}): per agent at most 3x the arena's time",
+             f"{fmt(r, 2)}x" if r else "not run", r <= 3 if r else None)
 
 
 if __name__ == "__main__":
