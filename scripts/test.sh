@@ -2,7 +2,8 @@
 # Builds and runs every test of Thyrix, warnings as errors:
 #   1. Release, real = double, with the wxWidgets front-end when wxWidgets is installed, and
 #      the Python package with its pytest tests (the CTest test Python.pytest);
-#   2. an installed Thyrix found by find_package from another project;
+#   2. an installed Thyrix found by find_package from another project, and a smoke run of the
+#      peer benchmarks (bench/PeerBenchmarks, shortened);
 #   3. Debug under AddressSanitizer + UndefinedBehaviorSanitizer, with the front-end too;
 #   4. Release, real = float;
 #   5. Release, real = float, built with clang;
@@ -45,6 +46,16 @@ cmake --install build/release --prefix build/install >/dev/null
 cmake -S tests/consumer -B build/consumer -DCMAKE_PREFIX_PATH="$PWD/build/install" >/dev/null
 cmake --build build/consumer -j"$jobs" >/dev/null
 ctest_in build/consumer
+
+echo "=== peer benchmarks (built, and a few scenes run shortened) ==="
+# A smoke test of bench/: it compiles (with Box2D v3 when ../shared/peers/box2d-v3.tar.gz is
+# there, and Box2D 2.4 and Chipmunk when installed) and runs. Only PeerBenchmarks is built, in
+# the release tree, which then goes back to no benchmarks.
+cmake -S . -B build/release -DTHYRIX_BUILD_BENCHMARKS=ON | grep 'PeerBenchmarks:' || true
+cmake --build build/release -j"$jobs" --target PeerBenchmarks
+build/release/bench/PeerBenchmarks --quick --benchmark_filter='^(arena|crowd|pile1000|chain10)/' \
+  --benchmark_format=csv >/dev/null
+cmake -S . -B build/release -DTHYRIX_BUILD_BENCHMARKS=OFF >/dev/null
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 run sanitize -DCMAKE_BUILD_TYPE=Debug -DTHYRIX_SANITIZE=address,undefined "${gui[@]}"
