@@ -53,8 +53,9 @@ echo "=== peer benchmarks (built, and a few scenes run shortened) ==="
 # the release tree, which then goes back to no benchmarks.
 cmake -S . -B build/release -DTHYRIX_BUILD_BENCHMARKS=ON | grep 'PeerBenchmarks:' || true
 cmake --build build/release -j"$jobs" --target PeerBenchmarks
-build/release/bench/PeerBenchmarks --quick --benchmark_filter='^(arena|crowd|pile1000|chain10)/' \
-  --benchmark_format=csv >/dev/null
+log=$(build/release/bench/PeerBenchmarks --quick \
+  --benchmark_filter='^(arena|crowd|pile1000|chain10)/' 2>&1) || { echo "$log"; exit 1; }
+if echo "$log" | grep -q "ERROR OCCURRED"; then echo "$log"; exit 1; fi
 cmake -S . -B build/release -DTHYRIX_BUILD_BENCHMARKS=OFF >/dev/null
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
