@@ -83,7 +83,10 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
       borders += primitive->shapeType() == ShapeType::HalfPlane ? 1 : 0;
   const std::size_t gridShapes = gridShapes_.size() + shapes - (borders - borderShapes_.size());
   const std::size_t words = (gridShapes + 63) / 64;
+  registrationFirst_ = objects.size();  // the others of added are its sub-bodies
   reserveFor(bodyStates_, objects.size() + added.size());
+  reserveFor(awake_, objects.size() + added.size());
+  reserveFor(awakeStamp_, objects.size() + added.size());
   reserveFor(pendingBodies_, objects.size() + added.size());
   reserveFor(customObjects_, objects.size() + added.size());
   reserveFor(listedObjects_, objects.size() + added.size() + 1);
@@ -107,6 +110,8 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
   state.restsCheaply = state.standalone || state.shapeCount == 0;
   state.standaloneCircle =
       state.standalone && object.primitives()[0]->shapeType() == ShapeType::Circle;
+  state.custom = !hasDefaultHooks(object);
+  state.alwaysAwake = state.custom || index != registrationFirst_;
   bodyStates_.push_back(state);  // unknown: its first detection computes everything
   for (Primitive* primitive : object.primitives()) {
     const auto shape = static_cast<std::uint32_t>(shapes_.size());
@@ -133,6 +138,8 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
   bodies_.push_back({});
   movable_.push_back(0);
   touchedStamp_.push_back(0);
+  awake_.push_back(0);
+  awakeStamp_.push_back(0);
   objectContactCursor_.push_back(0);
   multiBodies_.push_back(dynamic_cast<MultiBodyObject*>(&object));
   hasMultiBodies_ = hasMultiBodies_ || multiBodies_.back() != nullptr;
@@ -150,6 +157,7 @@ void Simulator::reserveContacts(std::size_t count) {
   pairs_.reserve(count);
   broadPhase_.reservePairs(count);
   rows_.reserve(count);
+  if (activeRows_.size() < count) activeRows_.resize(count);
   islands_.reserve(objects.size(), count);
   baraff_.reserve(
       std::min(count, static_cast<std::size_t>(std::max(settings_.baraffMaxIslandContacts, 0))));
@@ -171,6 +179,15 @@ void Simulator::reserveContacts(std::size_t count) {
 void Simulator::advanceTime() {
   if (checkInputs) checkFinite();
   eraseContacts();
+  // Rest applies within advanceTime() only (the phases run by hand visit every body): its
+  // detection lists the awake bodies, which this step's phases 5, 6 and 8 then read.
+  struct Stepping {
+    bool& flag;
+    explicit Stepping(bool& f) : flag(f) { flag = true; }
+    ~Stepping() { flag = false; }
+    Stepping(const Stepping&) = delete;
+    Stepping& operator=(const Stepping&) = delete;
+  } stepping(stepping_);
   detectContacts();
   // With core shapes only (no object's own hooks, no articulated agent), nothing reads the
   // objects' contact lists before the solve ends: they are written once, after it, with the
@@ -179,12 +196,21 @@ void Simulator::advanceTime() {
   const bool listsAfter = listsAfterSolve();
   if (!listsAfter) indexContacts();
   applyMouseForce();
-  computeDerivativesWithoutContacts();
+  // Rest: phase 5 for the awake bodies only; a body dragged while at rest wakes.
+  const bool rest = awakeValid_;
+  if (rest) {
+    if (dragged_ != nullptr) listAwake(draggedIndex_);
+    computeAwakeDerivatives();
+  } else {
+    computeDerivativesWithoutContacts();
+  }
   statistics_.substeps = 1;
   mayDivide_ = listsAfter && eulerIntegrator_;
   solveContacts();
   mayDivide_ = false;
   if (parts_ > 1) {  // (the objects still hold their free velocities)
+    statistics_.awakeBodies = objects.size();
+    awakeValid_ = false;
     stepInParts();
     World::advanceTime();
     return;
@@ -192,11 +218,51 @@ void Simulator::advanceTime() {
   if (listsAfter) indexContacts();
   for (const std::uint32_t i : customObjects_) objects[i].control();  // the others do nothing
   // Phase 8: explicit Euler in its loop without virtual calls, unless replaced.
-  if (eulerIntegrator_)
+  // (A detection run again in the solve updated every body: awakeValid_ is then false.)
+  if (eulerIntegrator_ && awakeValid_)
+    integrateAwake(timestep());
+  else if (eulerIntegrator_)
     Integrator::integrateExcept(objects, customObjects_, timestep());
   else
     integrator_->integrate(*this, timestep());
+  statistics_.awakeBodies = awakeValid_ ? awakeCount_ : objects.size();
+  awakeValid_ = false;
   World::advanceTime();
+}
+
+void Simulator::computeAwakeDerivatives() {
+  // In registration order, as the full loop: an Elastoid pushes its bodies before they
+  // compute their velocities. The bodies the loop leaves out are unpushed with v and omega
+  // +0, the very values their hook would write.
+  for (std::size_t k = 0; k < awakeCount_; ++k) {
+    const std::uint32_t i = awake_[k];
+    PhysicalObject& object = objects[i];
+    if (bodyStates_[i].custom)
+      object.computeDerivativesWithoutContacts();
+    else
+      object.PhysicalObject::computeDerivativesWithoutContacts();
+  }
+}
+
+void Simulator::integrateAwake(real dt) {
+  // The bodies left out have v and omega +0 and a pose that is not -0 (a body whose pose was
+  // written is awake): r += 0 would leave every bit as it is.
+  for (std::size_t k = 0; k < awakeCount_; ++k) {
+    const std::uint32_t i = awake_[k];
+    PhysicalObject& object = objects[i];
+    if (bodyStates_[i].custom)
+      object.integrate(dt);
+    else
+      object.PhysicalObject::integrate(dt);
+  }
+}
+
+void Simulator::wake(PhysicalObject& object) {
+  const std::size_t index = indexOf(object);
+  if (index == objects.size())
+    throw InvalidArgument("Simulator.wake.object", "is not registered with this simulator");
+  // Never matching its filters, the body is compared and listed awake at the next detection.
+  bodyStates_[index].filterKey = ~std::uint64_t{0};
 }
 
 void Simulator::checkFinite() const {
@@ -261,16 +327,23 @@ void Simulator::eraseContacts() {
   countsComplete_ = true;
 }
 
+std::size_t Simulator::indexOf(const PhysicalObject& object) const {
+  std::size_t i = 0;
+  while (i < objects.size() && &objects[i] != &object) ++i;
+  return i;
+}
+
 void Simulator::startDrag(PhysicalObject& object, Vector2 grabPoint) {
   requireFinite(grabPoint, "Simulator.startDrag.grabPoint");
   PhysicalObject* body = &object;
   if (auto* primitive = dynamic_cast<Primitive*>(&object)) body = &primitive->owner();
-  if (std::none_of(objects.begin(), objects.end(),
-                   [body](const PhysicalObject& o) { return &o == body; }))
+  const std::size_t index = indexOf(*body);
+  if (index == objects.size())
     throw InvalidArgument("Simulator.startDrag.object", "is not registered with this simulator");
   if (body->primitives().empty())  // an elastoid, say: drag one of its bodies instead
     throw InvalidArgument("Simulator.startDrag.object", "has no shape of its own to grab");
   dragged_ = body;
+  draggedIndex_ = static_cast<std::uint32_t>(index);
   real smallest = realMax;
   for (const Primitive* primitive : body->primitives())
     if (primitive->radius() > 0) smallest = std::min(smallest, primitive->radius());

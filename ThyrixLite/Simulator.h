@@ -47,6 +47,12 @@ struct StepStatistics {
   /// the solve moved a point of a shape farther than its radius in one step
   /// (Simulator::advanceTime()); 1 in almost every step.
   std::size_t substeps = 1;
+  /// Bodies that phases 5 and 8 visited: every object, but with Simulator::restSkipping on and
+  /// no gravity field only the awake ones (the users' guide, "Rest"); bodies at rest cost
+  /// nothing there.
+  std::size_t awakeBodies = 0;
+  /// Contacts between two bodies at rest that the solve left out (no row; force 0).
+  std::size_t restingContacts = 0;
 };
 
 /// A World that advances in time with quasistatic dynamics.
@@ -144,11 +150,19 @@ class Simulator : public World {
   /// times (StepStatistics::redetections; the users' guide, "Walls").
   void solveContacts();
 
-  /// Rest skipping (exact, on by default): a shape whose pose did not change since the last
+  /// Rest (exact, on by default): a shape whose pose did not change since the last
   /// detection keeps its geometry and box, and two such shapes keep the last detection's
-  /// contacts instead of being tested again. The results are bit-identical either way; turn
-  /// it off only to compare.
+  /// contacts instead of being tested again; a body at rest (docs/UsersGuide.md, "Rest") is
+  /// not visited by phases 5 and 8, and the contacts between bodies at rest build no row. The
+  /// results are bit-identical either way; turn it off only to compare.
   bool restSkipping = true;
+
+  /// Wakes @p object for the next step: needed only after a hook (control(), say) wrote the
+  /// velocity `v` or `omega` of another object at rest, which the step's integration would
+  /// otherwise not see (every other write between steps, to a pose, force, torque, velocity,
+  /// `fixed` or `collisionGroup`, wakes the body by itself). Harmless on a body awake.
+  /// @throws InvalidArgument naming "Simulator.wake.object" if it is not registered here
+  void wake(PhysicalObject& object);
 
   /// Sizes the per-step buffers for up to @p count contacts (and, with articulated agents
   /// registered, islands of up to 256 rows), so that steps with no more contacts than that
@@ -262,6 +276,9 @@ class Simulator : public World {
     bool movable = false;
     bool standalone = false;        // the body is its one primitive
     bool standaloneCircle = false;  // ... and that is a circle
+    bool custom = false;            // its hooks are its own (called through virtual calls)
+    // Never at rest: its own hooks may move it, or it is a sub-body its owner's hooks push.
+    bool alwaysAwake = false;
     // Standalone, or no shape: at rest, only its sensors to note. As registered: then kept by
     // updateGeometry in filterKey, as a byte that is 1 while the body travels.
     bool restsCheaply = false;
@@ -466,6 +483,15 @@ class Simulator : public World {
   /// solveContacts() once: @return true if it stopped short, its velocities carrying a shape
   /// past a border unseen (only if @p mayRedetect), leaving the objects' free velocities.
   bool solveOnce(bool mayRedetect);
+  /// solveOnce() with the rows of every contact, or (@p filtered) without those of contacts
+  /// between bodies at rest that hold at zero velocities; @p partial is set, and nothing
+  /// written, when an island of a filtered pass needs a force and reaches a body at rest
+  /// (which is then woken).
+  bool solvePass(bool mayRedetect, bool filtered, bool& partial);
+  /// The most filtered passes of one solve (solveOnce()), each waking more bodies at rest.
+  static constexpr int maxRestPasses = 4;
+  std::vector<std::uint32_t> activeRows_;  // a filtered pass's rows' contacts, by row
+  bool rowsFiltered_ = false;              // rows_ are a filtered pass's (row k: activeRows_[k])
   /// The length of the step or substep being solved: timestep() but within stepInParts().
   [[nodiscard]] real solveStep() const { return substep_ > 0 ? substep_ : timestep(); }
   void solveGeneralIsland(std::span<const std::uint32_t> island);
@@ -640,8 +666,34 @@ class Simulator : public World {
   std::vector<real> denseForces_;
   std::vector<real> response_;
 
+  // Rest (advanceTime()): the bodies awake in this step, in registration order, then those
+  // the solve set moving; the rest keep v = 0 and no pending force, so phases 5 and 8 would
+  // leave them as they are. Listed by updateGeometry as it compares the bodies.
+  std::vector<std::uint32_t> awake_;
+  std::size_t awakeCount_ = 0;
+  std::vector<std::uint64_t> awakeStamp_;  // per body: awakeNow_ while listed in awake_
+  std::uint64_t awakeNow_ = 0;
+  std::size_t registrationFirst_ = 0;  // the object registered first of those being registered
+  // awake_ is this step's and phases 5 and 8 may keep to it (no gravity field: a body at
+  // rest in one is pushed by its weight; nor when every body was updated anyway).
+  bool awakeValid_ = false;
+  bool stepping_ = false;  // within advanceTime()
+  /// Lists body @p index in awake_ unless it is already.
+  void listAwake(std::uint32_t index) {
+    if (awakeStamp_[index] == awakeNow_) return;
+    awakeStamp_[index] = awakeNow_;
+    awake_[awakeCount_++] = index;
+  }
+  /// The index of @p object in `objects`, or objects.size() if it is not registered here.
+  [[nodiscard]] std::size_t indexOf(const PhysicalObject& object) const;
+  /// Phase 5 for the bodies of awake_ only (the others' hooks would change nothing).
+  void computeAwakeDerivatives();
+  /// Phase 8 (explicit Euler) for the bodies of awake_ only.
+  void integrateAwake(real dt);
+
   PhysicalObject* dragged_ = nullptr;
-  real dragMaxStep_ = 0;  // metres per step, from the dragged body's size
+  std::uint32_t draggedIndex_ = 0;  // its index in objects
+  real dragMaxStep_ = 0;            // metres per step, from the dragged body's size
   Vector2 dragLocalPoint_;
   Vector2 dragTarget_;
 

@@ -114,7 +114,7 @@ void Simulator::holdWalls(std::span<const std::uint32_t> island) {
     const ContactConstraint& row = rows_[k];
     const bool wallA = immovable(bodies_[row.a]);
     if (wallA == immovable(bodies_[row.b])) continue;
-    const GlobalContactInfo& c = contacts.items_[k];
+    const GlobalContactInfo& c = contacts.items_[rowsFiltered_ ? activeRows_[k] : k];
     const real margin =
         settings_.speculativeFraction * geometry_[wallA ? c.shapeB : c.shapeA].radius;
     const real violation = row.target - row.normalVelocity(bodies_[row.a], bodies_[row.b]);

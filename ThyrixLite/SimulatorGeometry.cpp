@@ -242,6 +242,9 @@ constexpr std::uint64_t filterMask = byteWord(0, 0xff) | groupBytes;  // fixed, 
 constexpr std::uint64_t comparedMask = filterMask | byteWord(1, 0xff);
 constexpr std::size_t travellingByte = 2;
 constexpr std::uint64_t travellingBit = byteWord(travellingByte, 1);
+// In the padding's byte of the key, 1 for a body that is never at rest (BodyState::alwaysAwake):
+// the body's bytes there are masked off, so it always differs.
+constexpr std::uint64_t alwaysAwakeBit = byteWord(3, 1);
 
 /// The BodyState::filterKey of a body of filters @p fixed and @p group.
 std::uint64_t filterKeyOf(std::uint32_t fixed, std::uint32_t group, bool travelling) {
@@ -424,7 +427,8 @@ THYRIX_ALWAYS_INLINE void Simulator::updateBody(std::uint32_t index, bool change
       const bool travelling = state.filterKey == ~std::uint64_t{0}
                                   ? !state.restsCheaply
                                   : (state.filterKey & travellingBit) != 0;
-      state.filterKey = filterKeyOf(state.fixed, state.group, travelling);
+      state.filterKey = filterKeyOf(state.fixed, state.group, travelling) |
+                        (state.alwaysAwake ? alwaysAwakeBit : 0);
     }
   }
   if (state.standalone) {  // a primitive of its own: its pose is the body's (common case)
@@ -661,6 +665,17 @@ void Simulator::updateGeometry() {
   // Every shape unmoved to begin with: a body at rest then writes nothing.
   std::fill(shapeMoved_.begin(), shapeMoved_.end(), std::uint8_t{0});
   const std::span<BodyState> states(bodyStates_);
+  // Rest: the bodies that differ, or move, or are pushed, are this step's awake ones; the
+  // others are at rest, and phases 5 and 8 pass them over (not in a gravity field, which
+  // pushes every movable body).
+  ++awakeNow_;
+  awakeCount_ = 0;
+  awakeValid_ = stepping_ && !everything && !hasGravity_;
+  std::uint32_t* const awake = awake_.data();
+  std::uint64_t* const awakeStamp = awakeStamp_.data();
+  const std::uint64_t awakeNow = awakeNow_;
+  const bool listing = awakeValid_;
+  std::size_t awakeCount = 0;
   // Bodies for the second loop, each as 4 index + 2 if its filters changed + 1 if it changed
   // (else its several shapes are compared).
   pendingBodies_.resize(states.size());
@@ -678,9 +693,20 @@ void Simulator::updateGeometry() {
   const auto flagDifference = [](const PhysicalObject& body, const BodyState& state) {
     return (filterBytes(body) & comparedMask) ^ state.filterKey;
   };
-  // A body that differs (@p pose, @p flags not both 0): moved, travelling, or with sensors.
+  // Not 0 when the body moves or is pushed: its velocities or accumulators are not all +0.
+  const auto motion = [](const PhysicalObject& body) {
+    return bitsOf(body.v.x) | bitsOf(body.v.y) | bitsOf(body.omega) | bitsOf(body.externalForce.x) |
+           bitsOf(body.externalForce.y) | bitsOf(body.externalTorque);
+  };
+  // A body that differs (@p pose, @p flags not both 0), moves or is pushed: awake.
   const auto visit = [&](BodyState& state, std::uint64_t pose,
                          std::uint64_t flags) THYRIX_LAMBDA_ALWAYS_INLINE {
+    // (Its index from its address here only, off the common path: a division.)
+    const auto index = static_cast<std::uint32_t>(&state - states.data());
+    if (listing) {
+      awakeStamp[index] = awakeNow;
+      awake[awakeCount++] = index;
+    }
     const std::uint64_t filters = flags & filterMask;
     const bool changed = (pose | filters) != 0;
     if (changed || (flags & travellingBit) != 0) {  // for the second loop
@@ -689,8 +715,6 @@ void Simulator::updateGeometry() {
         updateMovedCircle(state, changed);
         return;
       }
-      // (Its index from its address here only, off the common path: a division.)
-      const auto index = static_cast<std::uint32_t>(&state - states.data());
       pending[pendingCount++] = 4 * index + (filters != 0 ? 2 : 0) + (changed ? 1 : 0);
       return;
     }
@@ -705,7 +729,7 @@ void Simulator::updateGeometry() {
       const std::uint64_t pose =
           decltype(everythingConstant)::value ? ~std::uint64_t{0} : poseDifference(body, state);
       const std::uint64_t flags = flagDifference(body, state);
-      if ((pose | flags) == 0) [[likely]]  // at rest, without sensors, not travelling
+      if ((pose | flags | motion(body)) == 0) [[likely]]  // at rest, without sensors
         continue;
       visit(state, pose, flags);
     }
@@ -725,6 +749,12 @@ void Simulator::updateGeometry() {
               offsetof(BodyState, alpha) == offsetof(BodyState, r) + 2 * sizeof(Real) &&
               offsetof(BodyState, r) + 4 * sizeof(Real) <= sizeof(BodyState),
           "a pose is read as the first three of four lanes");
+      static_assert(
+          offsetof(PhysicalObject, omega) == offsetof(PhysicalObject, v) + 2 * sizeof(Real) &&
+              offsetof(PhysicalObject, externalTorque) ==
+                  offsetof(PhysicalObject, externalForce) + 2 * sizeof(Real) &&
+              offsetof(PhysicalObject, externalForce) + 4 * sizeof(Real) <= sizeof(PhysicalObject),
+          "the velocities and the accumulators are read as the first three of four lanes");
 #pragma GCC diagnostic pop
       const __m256i poseLanes = _mm256_set_epi64x(0, -1, -1, -1);
       for (BodyState& state : states) {
@@ -732,9 +762,14 @@ void Simulator::updateGeometry() {
         const __m256d difference =
             _mm256_xor_pd(_mm256_loadu_pd(static_cast<const Real*>(&body.r.x)),
                           _mm256_loadu_pd(static_cast<const Real*>(&state.r.x)));
+        // (The motion too: the velocities' and the accumulators' bits or'ed in.)
+        const __m256d moving =
+            _mm256_or_pd(_mm256_loadu_pd(static_cast<const Real*>(&body.v.x)),
+                         _mm256_loadu_pd(static_cast<const Real*>(&body.externalForce.x)));
         const std::uint64_t flags = flagDifference(body, state);
-        if (_mm256_testz_si256(_mm256_castpd_si256(difference), poseLanes) != 0 && flags == 0)
-            [[likely]]
+        if (_mm256_testz_si256(_mm256_castpd_si256(_mm256_or_pd(difference, moving)), poseLanes) !=
+                0 &&
+            flags == 0) [[likely]]
           continue;
         visit(state, poseDifference(body, state), flags);
       }
@@ -756,6 +791,7 @@ void Simulator::updateGeometry() {
   // The bodies that changed, or whose several shapes are compared one by one, in their own
   // loop: the one above, run for every body at every step, then keeps everything in
   // registers (measured: one loop spilled and took 45 instructions a body at rest, not 29).
+  awakeCount_ = awakeCount;
   for (std::uint32_t k = 0; k < pendingCount; ++k)
     updateBody(pending[k] / 4, (pending[k] & 1) != 0, (pending[k] & 2) != 0);
   // Runs of links gathered the extents of their boxes and of those before: the rest too, so

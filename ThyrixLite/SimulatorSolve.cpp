@@ -27,6 +27,24 @@ void Simulator::solveContacts() {
 }
 
 bool Simulator::solveOnce(bool mayRedetect) {
+  // Rest: the contacts between two bodies at rest that hold at zero velocities build no row.
+  // Each island of the rows left is then one of the whole problem, or a part of one through
+  // bodies at rest: if such a part needs a force, those bodies wake and the pass runs again
+  // with their rows (a pushed cluster is woken ring by ring); past a few passes, one with
+  // every row. (Not within a divided step, whose substeps restore the free velocities.)
+  const bool filtered = stepping_ && awakeValid_ && !hasMultiBodies_ && substep_ == 0;
+  bool partial = false;
+  bool redetect = solvePass(mayRedetect, filtered, partial);
+  for (int pass = 1; partial && pass < maxRestPasses; ++pass)
+    redetect = solvePass(mayRedetect, true, partial);
+  if (partial) redetect = solvePass(mayRedetect, false, partial);
+  return redetect;
+}
+
+bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
+  partial = false;
+  rowsFiltered_ = filtered;
+  statistics_.restingContacts = 0;
   statistics_.islands = statistics_.solvedIslands = 0;
   statistics_.gaussSeidelSweeps = statistics_.baraffPivots = statistics_.baraffFallbacks = 0;
   statistics_.baraffOversizedIslands = 0;
@@ -77,25 +95,47 @@ bool Simulator::solveOnce(bool mayRedetect) {
   // a small world, most of the solve); in a pile the first contacts mostly decide it. Only
   // rows between rigid bodies can be judged so (a multi-body row's velocity is its object's
   // business).
-  const bool forceFree =
-      !hasMultiBodies_ &&
-      std::all_of(contacts.items_.begin(), contacts.items_.end(), [&](const GlobalContactInfo& c) {
-        const PhysicalObject& a = *c.objectA;
-        const PhysicalObject& b = *c.objectB;
-        const ContactConstraint row{c.bodyA, c.bodyB, c.normal, armA(c), armB(c)};
-        return row.normalVelocity({a.v, a.omega}, {b.v, b.omega}) >= target(c);
-      });
+  const auto holds = [&](const GlobalContactInfo& c) {
+    const PhysicalObject& a = *c.objectA;
+    const PhysicalObject& b = *c.objectB;
+    const ContactConstraint row{c.bodyA, c.bodyB, c.normal, armA(c), armB(c)};
+    return row.normalVelocity({a.v, a.omega}, {b.v, b.omega}) >= target(c);
+  };
+  // Rest: a contact of two bodies at rest (v and omega +0, not pushed, not listed awake) that
+  // holds at zero velocities, as it would at the free ones, is left out (its force stays 0,
+  // as detection left it); the others, active, are listed.
+  std::size_t activeCount = 0;
+  bool forceFree = false;
+  if (filtered) {
+    if (activeRows_.size() < contacts.size()) activeRows_.resize(contacts.size());
+    std::uint32_t* const active = activeRows_.data();
+    const std::uint64_t* const awakeStamp = awakeStamp_.data();
+    const std::uint64_t now = awakeNow_;
+    forceFree = true;
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+      const GlobalContactInfo& c = contacts.items_[k];
+      if (awakeStamp[c.bodyA] != now && awakeStamp[c.bodyB] != now && real(0) >= target(c))
+        continue;
+      active[activeCount++] = static_cast<std::uint32_t>(k);
+      forceFree = forceFree && holds(c);
+    }
+    statistics_.restingContacts = contacts.size() - activeCount;
+  } else {
+    forceFree =
+        !hasMultiBodies_ && std::all_of(contacts.items_.begin(), contacts.items_.end(), holds);
+  }
   if (forceFree) {  // no force: contacts and object contact lists already say 0
     updateTactileSensors();
     return false;
   }
+  const std::uint32_t* const active = activeRows_.data();
 
   // The rows, then their bodies, then the islands. Only the bodies that rows touch take part
   // (the others keep their velocities): a world of many bodies with few contacts pays for its
   // contacts, not for its size. The rows' pass lists each body at its first row without a
   // branch (whether a body is new is unpredictable: a branch on it was mispredicted about once
   // a contact in a pile); the bodies' pass then reads each object once.
-  const std::size_t contactCount = contacts.size();
+  const std::size_t contactCount = filtered ? activeCount : contacts.size();  // (rows)
   const std::size_t rowCount = contactCount + internal_.size();
   rows_.resize(rowCount);
   // Each body once, and a slot past them for touch()'s store that is not taken. Sized by the
@@ -124,11 +164,12 @@ bool Simulator::solveOnce(bool mayRedetect) {
   const GlobalContactInfo* const previous = previousContacts_.data();
   const std::size_t previousCount = previousContacts_.size();
   std::size_t hint = 0;
-  for (std::size_t k = 0; k < contactCount; ++k) {
+  for (std::size_t p = 0; p < contactCount; ++p) {
+    const std::size_t k = filtered ? active[p] : p;  // row p is contact k
     const GlobalContactInfo& c = contacts.items_[k];
     touch(c.bodyA);
     touch(c.bodyB);
-    ContactConstraint& row = rows[k];
+    ContactConstraint& row = rows[p];
     row.a = c.bodyA;
     row.b = c.bodyB;
     row.normal = c.normal;
@@ -206,17 +247,37 @@ bool Simulator::solveOnce(bool mayRedetect) {
       for (const std::uint32_t k : island) rows[k].force = 0;  // (the warm start's, unused)
       continue;
     }
+    // Through a body at rest, the island may be a part of a larger one: such bodies wake, and
+    // the pass is run again with their rows.
+    if (filtered) {
+      const std::size_t listed = awakeCount_;
+      for (const std::uint32_t k : island) {
+        if (movableBody[rows[k].a] != 0) listAwake(rows[k].a);
+        if (movableBody[rows[k].b] != 0) listAwake(rows[k].b);
+      }
+      if (awakeCount_ != listed) partial = true;
+      if (partial) continue;
+    }
     solveIsland(island);
   }
+  if (partial) return false;
   parts_ = mayDivide_ ? partsNeeded({touched, movedCount}) : 1;
+  // The rows' forces to their contacts (those left out keep 0).
+  const auto storeForces = [&] {
+    if (filtered)
+      for (std::size_t p = 0; p < contactCount; ++p)
+        contacts.items_[active[p]].force = rows[p].force;
+    else
+      for (std::size_t k = 0; k < contactCount; ++k) contacts.items_[k].force = rows[k].force;
+  };
   if (parts_ > 1) {  // the objects keep their free velocities for the substeps
-    for (std::size_t k = 0; k < contacts.size(); ++k) contacts.items_[k].force = rows_[k].force;
+    storeForces();
     return false;
   }
   if (mayRedetect && outranMargins({touched, movedCount})) {
     // Detected again: the objects keep their free velocities, the contacts these forces (the
     // next solve's warm start).
-    for (std::size_t k = 0; k < contacts.size(); ++k) contacts.items_[k].force = rows_[k].force;
+    storeForces();
     return true;
   }
   for (std::size_t t = 0; t < movedCount; ++t) {
@@ -225,12 +286,23 @@ bool Simulator::solveOnce(bool mayRedetect) {
     object.v = bodies_[i].v;
     object.omega = bodies_[i].omega;
   }
+  // A body at rest that a contact set moving wakes (for phase 8).
+  if (awakeValid_)
+    for (std::size_t t = 0; t < movedCount; ++t) {
+      const std::uint32_t i = touched[t];
+      const SolverBody& body = bodies_[i];
+      if (body.v.x != 0 || body.v.y != 0 || body.omega != 0 || std::signbit(body.v.x) ||
+          std::signbit(body.v.y) || std::signbit(body.omega))
+        listAwake(i);
+    }
   // The contacts keep their forces: next step's warm start reads them there.
-  for (std::size_t k = 0; k < contacts.size(); ++k) contacts.items_[k].force = rows_[k].force;
+  storeForces();
   // Lists made after the solve (advanceTime() with core shapes) take the forces from the
   // contacts; objectContacts_ is then the last step's, seen by no object. (No object is
   // listed then: eraseContacts() cleared the lists, and only indexContacts() fills them.)
-  if (listedCount_ != 0)
+  if (listedCount_ != 0 && filtered)
+    for (ContactInfo& info : objectContacts_) info.force = contacts.items_[info.index].force;
+  else if (listedCount_ != 0)
     for (ContactInfo& info : objectContacts_) info.force = rows_[info.index].force;
   updateTactileSensors();
   return false;

@@ -192,6 +192,7 @@ void Simulator::applyState(const WorldState& state) {
 
   setClock(steps, now);
   dragged_ = dragged == 0 ? nullptr : &objects[static_cast<std::size_t>(dragged - 1)];
+  draggedIndex_ = dragged == 0 ? 0 : static_cast<std::uint32_t>(dragged - 1);
   dragLocalPoint_ = dragLocalPoint;
   dragTarget_ = dragTarget;
   dragMaxStep_ = dragMaxStep;
