@@ -261,8 +261,10 @@ void Simulator::wake(PhysicalObject& object) {
   const std::size_t index = indexOf(object);
   if (index == objects.size())
     throw InvalidArgument("Simulator.wake.object", "is not registered with this simulator");
-  // Never matching its filters, the body is compared and listed awake at the next detection.
+  // Never matching its filters, the body is compared and listed awake at the next detection;
+  // within a step (a hook's call), it is listed now, for the phases still to come.
   bodyStates_[index].filterKey = ~std::uint64_t{0};
+  if (stepping_ && awakeValid_) listAwake(static_cast<std::uint32_t>(index));
 }
 
 void Simulator::checkFinite() const {
