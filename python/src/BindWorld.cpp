@@ -269,7 +269,7 @@ void bindWorld(py::module_& m) {
           [](Simulator& s, py::handle g) { s.setGravity(toVector2(g, "Simulator.gravity")); },
           "Gravity (m/s^2); (0, 0) by default.")
       .def_readwrite("rest_skipping", &Simulator::restSkipping,
-                     "Keep the contacts of bodies at rest (same results, faster).")
+                     "Leave bodies at rest out of the step (same results, faster).")
       .def("contacts", &contactArrays,
            "The last step's contacts as a dict of arrays: body_a, body_b (object indices), "
            "point (K, 2), normal (K, 2, from a to b), depth (K,), force (K,).");
