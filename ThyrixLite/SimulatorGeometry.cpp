@@ -699,11 +699,16 @@ void Simulator::updateGeometry() {
            bitsOf(body.externalForce.y) | bitsOf(body.externalTorque);
   };
   // A body that differs (@p pose, @p flags not both 0), moves or is pushed: awake.
-  const auto visit = [&](BodyState& state, std::uint64_t pose,
-                         std::uint64_t flags) THYRIX_LAMBDA_ALWAYS_INLINE {
-    // (Its index from its address here only, off the common path: a division.)
-    const auto index = static_cast<std::uint32_t>(&state - states.data());
-    if (listing) {
+  // (Its index from its address, off the common path: a division.)
+  const auto indexOfState = [&states](const BodyState& state) {
+    return static_cast<std::uint32_t>(&state - states.data());
+  };
+  // Listing the awake bodies or not (@p listingConstant): without, in a gravity field, the
+  // loops compare as they did before rest, without reading the motion.
+  const auto visit = [&](BodyState& state, std::uint64_t pose, std::uint64_t flags,
+                         auto listingConstant) THYRIX_LAMBDA_ALWAYS_INLINE {
+    if constexpr (decltype(listingConstant)::value) {
+      const std::uint32_t index = indexOfState(state);
       awakeStamp[index] = awakeNow;
       awake[awakeCount++] = index;
     }
@@ -715,7 +720,8 @@ void Simulator::updateGeometry() {
         updateMovedCircle(state, changed);
         return;
       }
-      pending[pendingCount++] = 4 * index + (filters != 0 ? 2 : 0) + (changed ? 1 : 0);
+      pending[pendingCount++] =
+          4 * indexOfState(state) + (filters != 0 ? 2 : 0) + (changed ? 1 : 0);
       return;
     }
     // At rest, with sensors: a primitive of its own (or a shapeless body) has nothing else to
@@ -723,22 +729,25 @@ void Simulator::updateGeometry() {
     if (state.standalone) sensingPrimitives_.push_back(&static_cast<Primitive&>(*state.object));
   };
   // In two copies: with everything recomputed (every body then differs), and without.
-  const auto check = [&](auto everythingConstant) THYRIX_LAMBDA_ALWAYS_INLINE {
+  const auto check = [&](auto everythingConstant,
+                         auto listingConstant) THYRIX_LAMBDA_ALWAYS_INLINE {
     for (BodyState& state : states) {
       const PhysicalObject& body = *state.object;
       const std::uint64_t pose =
           decltype(everythingConstant)::value ? ~std::uint64_t{0} : poseDifference(body, state);
       const std::uint64_t flags = flagDifference(body, state);
-      if ((pose | flags | motion(body)) == 0) [[likely]]  // at rest, without sensors
+      const std::uint64_t moving = decltype(listingConstant)::value ? motion(body) : 0;
+      if ((pose | flags | moving) == 0) [[likely]]  // at rest, without sensors
         continue;
-      visit(state, pose, flags);
+      visit(state, pose, flags, listingConstant);
     }
   };
 #if defined(THYRIX_AVX_DISPATCH)
   // With AVX the pose in one comparison: x, y and the angle, and the 8 bytes after them,
   // ignored (the body's direction cache, the state's filters), read as four lanes. (In double
   // only: a float build instantiates it empty, and never calls it.)
-  const auto checkAvx = [&](auto realConstant) __attribute__((target("avx"))) {
+  const auto checkAvx = [&](auto realConstant, auto listingConstant)
+      __attribute__((target("avx"))) {
     using Real = decltype(realConstant);
     if constexpr (std::is_same_v<Real, double>) {
 #pragma GCC diagnostic push
@@ -762,31 +771,38 @@ void Simulator::updateGeometry() {
         const __m256d difference =
             _mm256_xor_pd(_mm256_loadu_pd(static_cast<const Real*>(&body.r.x)),
                           _mm256_loadu_pd(static_cast<const Real*>(&state.r.x)));
-        // (The motion too: the velocities' and the accumulators' bits or'ed in.)
-        const __m256d moving =
-            _mm256_or_pd(_mm256_loadu_pd(static_cast<const Real*>(&body.v.x)),
-                         _mm256_loadu_pd(static_cast<const Real*>(&body.externalForce.x)));
+        // (The motion too, when listing: the velocities' and the accumulators' bits or'ed in.)
+        __m256d compared = difference;
+        if constexpr (decltype(listingConstant)::value)
+          compared = _mm256_or_pd(
+              compared,
+              _mm256_or_pd(_mm256_loadu_pd(static_cast<const Real*>(&body.v.x)),
+                           _mm256_loadu_pd(static_cast<const Real*>(&body.externalForce.x))));
         const std::uint64_t flags = flagDifference(body, state);
-        if (_mm256_testz_si256(_mm256_castpd_si256(_mm256_or_pd(difference, moving)), poseLanes) !=
-                0 &&
-            flags == 0) [[likely]]
+        if (_mm256_testz_si256(_mm256_castpd_si256(compared), poseLanes) != 0 && flags == 0)
+            [[likely]]
           continue;
-        visit(state, poseDifference(body, state), flags);
+        visit(state, poseDifference(body, state), flags, listingConstant);
       }
     }
   };
 #endif
+  // (Everything recomputed: no rest, nothing listed.)
   if (everything) {
-    check(std::true_type{});
+    check(std::true_type{}, std::false_type{});
   } else {
     bool checked = false;
 #if defined(THYRIX_AVX_DISPATCH)
     if (std::is_same_v<real, double> && processorHasAvx()) {
-      checkAvx(real{});
+      if (listing)
+        checkAvx(real{}, std::true_type{});
+      else
+        checkAvx(real{}, std::false_type{});
       checked = true;
     }
 #endif
-    if (!checked) check(std::false_type{});
+    if (!checked && listing) check(std::false_type{}, std::true_type{});
+    if (!checked && !listing) check(std::false_type{}, std::false_type{});
   }
   // The bodies that changed, or whose several shapes are compared one by one, in their own
   // loop: the one above, run for every body at every step, then keeps everything in
