@@ -103,7 +103,8 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
   };
   // Rest: a contact of two bodies at rest (v and omega +0, not pushed, not listed awake) that
   // holds at zero velocities, as it would at the free ones, is left out (its force stays 0,
-  // as detection left it); the others, active, are listed.
+  // as detection left it); the others, active, are listed. (A gap or a touch, depth <= 0, has
+  // a target depth / dt <= 0, which a normal velocity of zero meets; a NaN depth does not.)
   std::size_t activeCount = 0;
   bool forceFree = false;
   if (filtered) {
@@ -114,8 +115,7 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
     forceFree = true;
     for (std::size_t k = 0; k < contacts.size(); ++k) {
       const GlobalContactInfo& c = contacts.items_[k];
-      if (awakeStamp[c.bodyA] != now && awakeStamp[c.bodyB] != now && real(0) >= target(c))
-        continue;
+      if (awakeStamp[c.bodyA] != now && awakeStamp[c.bodyB] != now && c.depth <= 0) continue;
       active[activeCount++] = static_cast<std::uint32_t>(k);
       forceFree = forceFree && holds(c);
     }
