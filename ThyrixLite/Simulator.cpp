@@ -197,8 +197,7 @@ void Simulator::advanceTime() {
   if (!listsAfter) indexContacts();
   applyMouseForce();
   // Rest: phase 5 for the awake bodies only; a body dragged while at rest wakes.
-  const bool rest = awakeValid_;
-  if (rest) {
+  if (awakeValid_) {
     if (dragged_ != nullptr) listAwake(draggedIndex_);
     computeAwakeDerivatives();
   } else {
