@@ -177,7 +177,8 @@ void Simulator::advanceTime() {
   // forces, instead of here and again for the forces (two passes over 160 bytes a contact,
   // the second from the last-level cache). After the step the lists are the same.
   const bool listsAfter = listsAfterSolve();
-  if (!listsAfter) indexContacts();
+  const bool indexAfter = listsAfter && !referenceMode;
+  if (!indexAfter) indexContacts();
   applyMouseForce();
   computeDerivativesWithoutContacts();
   statistics_.substeps = 1;
@@ -189,10 +190,14 @@ void Simulator::advanceTime() {
     World::advanceTime();
     return;
   }
-  if (listsAfter) indexContacts();
-  for (const std::uint32_t i : customObjects_) objects[i].control();  // the others do nothing
+  if (indexAfter) indexContacts();
+  if (referenceMode) {
+    for (PhysicalObject& object : objects) object.control();
+  } else {
+    for (const std::uint32_t i : customObjects_) objects[i].control();  // the others do nothing
+  }
   // Phase 8: explicit Euler in its loop without virtual calls, unless replaced.
-  if (eulerIntegrator_)
+  if (eulerIntegrator_ && !referenceMode)
     Integrator::integrateExcept(objects, customObjects_, timestep());
   else
     integrator_->integrate(*this, timestep());

@@ -79,10 +79,17 @@ void Simulator::detectContacts() {
   // Appending to contacts of another detection: this list is no basis for the next reuse.
   const bool fromEmpty = contacts.empty();
   const auto start = static_cast<std::uint32_t>(contacts.size());
-  updateGeometry();
+  if (referenceMode) {
+    updateGeometryPlainly();
+    cachesForgotten_ = true;
+  } else {
+    if (cachesForgotten_) forgetCaches();  // (they did not follow the reference mode's steps)
+    cachesForgotten_ = false;
+    updateGeometry();
+  }
   // Reuse needs the last detection's complete list (eraseContacts kept it aside).
   // (Only pairs of unmoved shapes are reused: none when every shape moved.)
-  const bool reuse = restSkipping && previousValid_ && fromEmpty;
+  const bool reuse = restSkipping && !referenceMode && previousValid_ && fromEmpty;
   previousIndexed_ = false;  // indexed at most once a detection, for the shapes of now
   previousCursor_ = 0;
   previousCount_ = previousContacts_.size();
@@ -97,11 +104,15 @@ void Simulator::detectContacts() {
   contactsSolved_ = false;  // these contacts, until the solver gives them forces
   statistics_.reusedContacts = 0;
   // (Without new objects or objects with rules, there is nothing to look at.)
-  if (neverPaired_.objects != bodyStates_.size() || !neverPaired_.rules.empty())
-    updateNeverPaired();
-  broadPhase_.setNeverPaired(neverPaired_.bits);
-  broadPhase_.findPairs(gridBoxes_, gridMovedBits_, pairs_,
-                        gridExtentsCount_ == gridShapes_.size() ? &gridExtents_ : nullptr);
+  if (referenceMode) {
+    findPairsPlainly();
+  } else {
+    if (neverPaired_.objects != bodyStates_.size() || !neverPaired_.rules.empty())
+      updateNeverPaired();
+    broadPhase_.setNeverPaired(neverPaired_.bits);
+    broadPhase_.findPairs(gridBoxes_, gridMovedBits_, pairs_,
+                          gridExtentsCount_ == gridShapes_.size() ? &gridExtents_ : nullptr);
+  }
   // The pairs of two circles in reach (most of a crowd's) are batched: their square roots and
   // divisions, in a short loop of their own, overlap from pair to pair (measured: one pair
   // at a time, each waited for the last). A batch is emptied before any other pair adds
@@ -136,7 +147,7 @@ void Simulator::detectContacts() {
       // (Of two bodies: reusePair's shape A is the one addContacts would take first.)
       const bool swap = sb.type < sa.type;
       reusePair(swap ? b : a, swap ? a : b);
-    } else if (sa.type == ShapeType::Circle && sb.type == ShapeType::Circle) {
+    } else if (sa.type == ShapeType::Circle && sb.type == ShapeType::Circle && !referenceMode) {
       // Kept (the count advanced) without a branch: which candidates are in reach is random to
       // the predictor.
       batched += std::size_t{circlesInReach(a, b, batch[batched])};
@@ -147,13 +158,20 @@ void Simulator::detectContacts() {
     }
   }
   flush();
-  findBorderContacts(reuse);
+  if (referenceMode)
+    findBorderContactsPlainly();
+  else
+    findBorderContacts(reuse);
   flushReused();
   if (contacts.size() > scannedListLength) chainFirstPairs(start);
   contactsComplete_ = fromEmpty;
   previousValid_ = false;  // used: the next detection compares against this one
   statistics_.contacts = contacts.size();
-  for (const std::uint32_t index : customObjects_) objects[index].updateSensors(*this);
+  if (referenceMode) {
+    for (PhysicalObject& object : objects) object.updateSensors(*this);
+  } else {
+    for (const std::uint32_t index : customObjects_) objects[index].updateSensors(*this);
+  }
 }
 
 void Simulator::findBorderContacts(bool reuse) {
@@ -407,7 +425,9 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
                  : collideHalfPlaneCapsule(ga.p0, ga.p1, gb.p0, gb.p1, gb.radius, margin));
       break;
     case ShapeType::Circle:
-      if (b.type == ShapeType::Circle) {
+      if (b.type == ShapeType::Circle && referenceMode) {
+        append(collideCircles(ga.p0, ga.radius, gb.p0, gb.radius, margin));
+      } else if (b.type == ShapeType::Circle) {
         CirclePair pair;
         if (circlesInReach(shapeA, shapeB, pair)) addCirclePairs({&pair, 1});
       } else {

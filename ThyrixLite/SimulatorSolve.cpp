@@ -78,7 +78,7 @@ bool Simulator::solveOnce(bool mayRedetect) {
   // rows between rigid bodies can be judged so (a multi-body row's velocity is its object's
   // business).
   const bool forceFree =
-      !hasMultiBodies_ &&
+      !referenceMode && !hasMultiBodies_ &&
       std::all_of(contacts.items_.begin(), contacts.items_.end(), [&](const GlobalContactInfo& c) {
         const PhysicalObject& a = *c.objectA;
         const PhysicalObject& b = *c.objectB;
@@ -137,7 +137,9 @@ bool Simulator::solveOnce(bool mayRedetect) {
     row.target = target(c);
     row.force = 0;
     row.order = dot(c.point, up);
-    if (warmStart) {
+    if (warmStart && referenceMode) {
+      row.force = previousForcePlainly(c);
+    } else if (warmStart) {
       if (hint < previousCount && previous[hint].sameContactAs(c)) {
         row.force = previous[hint].force;
         ++hint;
@@ -207,6 +209,12 @@ bool Simulator::solveOnce(bool mayRedetect) {
       continue;
     }
     solveIsland(island);
+  }
+  // No force anywhere: the step the judgment above returns early from (the reference mode comes
+  // here): the velocities are the free ones, and neither divided nor checked against the walls.
+  if (!hasMultiBodies_ && statistics_.solvedIslands == 0) {
+    updateTactileSensors();
+    return false;
   }
   parts_ = mayDivide_ ? partsNeeded({touched, movedCount}) : 1;
   if (parts_ > 1) {  // the objects keep their free velocities for the substeps
