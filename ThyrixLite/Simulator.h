@@ -360,6 +360,14 @@ class Simulator : public World {
   /// general (the loop does a chain's links and the unmoved shapes itself).
   void updateComposedShape(std::uint32_t shape, bool changed, bool poseKnown, Vector2& boxMin,
                            Vector2& boxMax);
+  /// Sorts pairs_ by first, then second box (BroadPhase's order up to its all-pairs limit).
+  void sortPairs();
+  std::vector<std::uint32_t> pairStart_;  // sortPairs(): each first box's place
+  std::vector<BoxPair> sortedPairs_;      // sortPairs()' output, swapped with pairs_
+  /// Phase 2's pairs of grid shapes (reused, batched or tested), then the borders' contacts.
+  void detectPairs(bool reuse);
+  /// addContacts() through the narrow phase's general functions only (reference mode).
+  void addContactsPlainly(std::uint32_t shapeA, std::uint32_t shapeB);
   void findBorderContacts(bool reuse);
   /// The pairs of border @p border with the grid shapes @p first + i for each bit i of @p bits
   /// (shapes in its reach): reused if @p reuse (the border's reach is remembered) and neither

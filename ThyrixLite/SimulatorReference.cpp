@@ -95,7 +95,7 @@ void Simulator::findPairsPlainly() {
 
 void Simulator::findBorderContactsPlainly() {
   for (const std::uint32_t border : borderShapes_)
-    for (const std::uint32_t shape : gridShapes_) addContacts(border, shape);
+    for (const std::uint32_t shape : gridShapes_) addContactsPlainly(border, shape);
 }
 
 real Simulator::previousForcePlainly(const GlobalContactInfo& contact) const {

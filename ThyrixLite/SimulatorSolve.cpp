@@ -120,7 +120,7 @@ bool Simulator::solveOnce(bool mayRedetect) {
   // searchPreviousForce() looks further. A contact's force depends only on its identity, not
   // on the order of the search. Rows that no island solve starts from get theirs back to 0
   // (satisfied islands, solveIsland()); Baraff's islands ignore them.
-  const bool warmStart = settings_.warmStart && previousSolved_;
+  const bool warmStart = settings_.warmStart && previousSolved_ && !referenceMode;
   const GlobalContactInfo* const previous = previousContacts_.data();
   const std::size_t previousCount = previousContacts_.size();
   std::size_t hint = 0;
@@ -137,9 +137,7 @@ bool Simulator::solveOnce(bool mayRedetect) {
     row.target = target(c);
     row.force = 0;
     row.order = dot(c.point, up);
-    if (warmStart && referenceMode) {
-      row.force = previousForcePlainly(c);
-    } else if (warmStart) {
+    if (warmStart) {
       if (hint < previousCount && previous[hint].sameContactAs(c)) {
         row.force = previous[hint].force;
         ++hint;
@@ -150,6 +148,9 @@ bool Simulator::solveOnce(bool mayRedetect) {
       }
     }
   }
+  if (referenceMode && settings_.warmStart && previousSolved_)
+    for (std::size_t k = 0; k < contactCount; ++k)
+      rows[k].force = previousForcePlainly(contacts.items_[k]);
   // A joint limit is a row of its object alone; its Jacobian is the object's business.
   for (std::size_t j = 0; j < internal_.size(); ++j) {
     const std::uint32_t owner = internalOwner_[j];

@@ -11,8 +11,10 @@
 #include <Controller/RandomController.h>
 #include <Scenes.h>
 #include <ThyrixLite/Border.h>
+#include <ThyrixLite/CappedRectangle.h>
 #include <ThyrixLite/Simulator.h>
 #include <ThyrixPro/ArticulatedAgentQuasistatic.h>
+#include <Tools/MTRandom.h>
 
 #include <functional>
 #include <memory>
@@ -103,6 +105,39 @@ inline std::unique_ptr<Simulator> iunctusGrasping() {
   return simulator;
 }
 
+/// An articulated chain of 60 capsule links curling over a floor (more boxes than the broad
+/// phase tests all pairs of, and runs of links placed together).
+inline std::unique_ptr<Simulator> longChain() {
+  auto simulator = std::make_unique<Simulator>();
+  simulator->setGravity({0, real(-1)});
+  simulator->registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
+  auto& agent = simulator->registerObject(std::make_unique<ArticulatedAgentQuasistatic>(
+      std::vector<ArticulatedBasePart>{ArticulatedBasePart::circle(real(0.5), 2)},
+      std::vector<ArticulatedLimb>{
+          ArticulatedLimb::chain({real(0.5), 0}, 60, real(0.4), real(0.1), real(0.5))}));
+  agent.setPose({0, real(3)}, 0);
+  for (int i = 1; i < 60; i += 3) agent.setJointTorque(i, real(0.05));
+  return simulator;
+}
+
+/// 150 circles and capsules in a walled arena, pushed at random before each step (the broad
+/// phase's grid and its memory of the last call, bodies that move and bodies at rest side by
+/// side).
+inline std::unique_ptr<Simulator> crowd() {
+  auto simulator = std::make_unique<Simulator>();
+  scenes::addWalls(*simulator, 30, 30);
+  scenes::addRandomCircles(*simulator, 120, real(0.6), 30, 5);
+  MTRandom random(6);
+  for (int i = 0; i < 30; ++i) {
+    auto& capsule =
+        simulator->registerObject(std::make_unique<CappedRectangle>(real(0.6), real(0.2), real(1)));
+    capsule.r = {static_cast<real>(random.uniform(1, 29)),
+                 static_cast<real>(random.uniform(1, 29))};
+    capsule.alpha = static_cast<real>(random.uniform(0, 3));
+  }
+  return simulator;
+}
+
 struct Scene {
   const char* name;
   Factory make;
@@ -112,6 +147,8 @@ inline const Scene scenesToTest[] = {
     {"Pile", pile},
     {"MixedPile", mixedPile},
     {"Chain", chain},
+    {"LongChain", longChain},
+    {"Crowd", crowd},
     {"Spherus", spherus},
     {"SpherusNeural", spherusNeural},
     {"Pac", pac},
