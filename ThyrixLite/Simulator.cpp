@@ -70,6 +70,7 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
   reserveFor(sensingPrimitives_, shapes_.size() + shapes);
   reserveFor(gridShapes_, gridShapes_.size() + shapes);
   reserveFor(gridBoxes_, gridShapes_.size() + shapes);
+  reserveFor(pairStart_, gridShapes_.size() + shapes + 1);
   reserveFor(bodies_, objects.size() + added.size());
   reserveFor(movable_, objects.size() + added.size());
   reserveFor(touched_, objects.size() + added.size());
@@ -148,6 +149,7 @@ void Simulator::reserveContacts(std::size_t count) {
   if (previousPairs_.size() < count) previousPairs_.resize(count);
   objectContacts_.reserve(2 * count);
   pairs_.reserve(count);
+  sortedPairs_.reserve(count);  // (sortPairs() swaps the two)
   broadPhase_.reservePairs(count);
   rows_.reserve(count);
   islands_.reserve(objects.size(), count);
