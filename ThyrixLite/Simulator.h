@@ -161,7 +161,8 @@ class Simulator : public World {
   /// before the solve, every object's control() and updateSensors() called, and phase 8 through
   /// Integrator::integrate() (no loop without virtual calls). The results are bit-identical to
   /// the default mode's, step by step: the mode is the oracle the tests compare the shortcuts
-  /// with, and a shortcut added later must be off in it too (tested: ReferenceModeTest).
+  /// with, and a shortcut added later (rest by structure, say) must be off in it too, its
+  /// plain form run instead (tested: ReferenceModeTest).
   /// It may be turned on or off between any two steps; it is much slower (quadratic in the
   /// shapes).
   bool referenceMode = false;
