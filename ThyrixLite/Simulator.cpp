@@ -70,6 +70,7 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
   reserveFor(sensingPrimitives_, shapes_.size() + shapes);
   reserveFor(gridShapes_, gridShapes_.size() + shapes);
   reserveFor(gridBoxes_, gridShapes_.size() + shapes);
+  reserveFor(pairStart_, gridShapes_.size() + shapes + 1);
   reserveFor(bodies_, objects.size() + added.size());
   reserveFor(movable_, objects.size() + added.size());
   reserveFor(touched_, objects.size() + added.size());
@@ -155,6 +156,7 @@ void Simulator::reserveContacts(std::size_t count) {
   if (previousPairs_.size() < count) previousPairs_.resize(count);
   objectContacts_.reserve(2 * count);
   pairs_.reserve(count);
+  sortedPairs_.reserve(count);  // (sortPairs() swaps the two)
   broadPhase_.reservePairs(count);
   rows_.reserve(count);
   if (activeRows_.size() < count) activeRows_.resize(count);
@@ -194,7 +196,8 @@ void Simulator::advanceTime() {
   // forces, instead of here and again for the forces (two passes over 160 bytes a contact,
   // the second from the last-level cache). After the step the lists are the same.
   const bool listsAfter = listsAfterSolve();
-  if (!listsAfter) indexContacts();
+  const bool indexAfter = listsAfter && !referenceMode;
+  if (!indexAfter) indexContacts();
   applyMouseForce();
   // Rest: phase 5 for the awake bodies only; a body dragged while at rest wakes.
   if (awakeValid_) {
@@ -214,13 +217,17 @@ void Simulator::advanceTime() {
     World::advanceTime();
     return;
   }
-  if (listsAfter) indexContacts();
-  for (const std::uint32_t i : customObjects_) objects[i].control();  // the others do nothing
+  if (indexAfter) indexContacts();
+  if (referenceMode) {
+    for (PhysicalObject& object : objects) object.control();
+  } else {
+    for (const std::uint32_t i : customObjects_) objects[i].control();  // the others do nothing
+  }
   // Phase 8: explicit Euler in its loop without virtual calls, unless replaced.
   // (A detection run again in the solve updated every body: awakeValid_ is then false.)
   if (eulerIntegrator_ && awakeValid_)
     integrateAwake(timestep());
-  else if (eulerIntegrator_)
+  else if (eulerIntegrator_ && !referenceMode)
     Integrator::integrateExcept(objects, customObjects_, timestep());
   else
     integrator_->integrate(*this, timestep());

@@ -164,6 +164,23 @@ class Simulator : public World {
   /// @throws InvalidArgument naming "Simulator.wake.object" if it is not registered here
   void wake(PhysicalObject& object);
 
+  /// Reference mode (off by default): every cache and shortcut kept only for speed is off, and
+  /// each step runs the plain algorithm of the users' guide: every shape placed from its pose
+  /// (no rest: every body visited, every contact a row; no fast paths for circles, composed bodies
+  /// or runs of links), every pair of grid boxes tested (no choice among broad-phase strategies, no
+  /// memory of the last call), every border tested against every shape (no reach words), every pair
+  /// through the narrow phase's general functions (no batch of circles, no reach test before them),
+  /// the last step's forces found by a scan (no lookups by cursor, chain or index), every contact
+  /// turned into a row (no judgment of a step that needs no force), the objects' contact lists made
+  /// before the solve, every object's control() and updateSensors() called, and phase 8 through
+  /// Integrator::integrate() (no loop without virtual calls). The results are bit-identical to
+  /// the default mode's, step by step: the mode is the oracle the tests compare the shortcuts
+  /// with, and a shortcut added later must be off in it too, its plain form run instead
+  /// (tested: ReferenceModeTest).
+  /// It may be turned on or off between any two steps; it is much slower (quadratic in the
+  /// shapes).
+  bool referenceMode = false;
+
   /// Sizes the per-step buffers for up to @p count contacts (and, with articulated agents
   /// registered, islands of up to 256 rows), so that steps with no more contacts than that
   /// allocate nothing. Without it the buffers grow to the largest count
@@ -300,6 +317,19 @@ class Simulator : public World {
   /// computeDerivativesWithoutContacts() with a gravity field that is not zero.
   void computeDerivativesInGravity();
   void updateGeometry();
+  // Reference mode (SimulatorReference.cpp): the plain algorithm in place of each cache.
+  /// updateGeometry() without caches: every body's shapes placed from their poses.
+  void updateGeometryPlainly();
+  /// Every pair of overlapping grid boxes into pairs_, by first then second box.
+  void findPairsPlainly();
+  /// Every border tested against every grid shape, border by border, in slot order.
+  void findBorderContactsPlainly();
+  /// The force the last step's contact with @p contact's identity ended with, or 0: a scan.
+  [[nodiscard]] real previousForcePlainly(const GlobalContactInfo& contact) const;
+  /// Makes the next detection recompute what rest skipping, the border reach words and the broad
+  /// phase keep from earlier detections (after a restore, or steps in reference mode).
+  void forgetCaches();
+  bool cachesForgotten_ = false;  // steps ran in reference mode: forgetCaches() before the next
   /// updateGeometry for a body that changed (its collision filters with @p newFilters), or
   /// that has several shapes (whose poses are then compared one by one).
   void updateBody(std::uint32_t index, bool changed, bool newFilters);
@@ -348,6 +378,14 @@ class Simulator : public World {
   /// general (the loop does a chain's links and the unmoved shapes itself).
   void updateComposedShape(std::uint32_t shape, bool changed, bool poseKnown, Vector2& boxMin,
                            Vector2& boxMax);
+  /// Sorts pairs_ by first, then second box (BroadPhase's order up to its all-pairs limit).
+  void sortPairs();
+  std::vector<std::uint32_t> pairStart_;  // sortPairs(): each first box's place
+  std::vector<BoxPair> sortedPairs_;      // sortPairs()' output, swapped with pairs_
+  /// Phase 2's pairs of grid shapes (reused, batched or tested), then the borders' contacts.
+  void detectPairs(bool reuse);
+  /// addContacts() through the narrow phase's general functions only (reference mode).
+  void addContactsPlainly(std::uint32_t shapeA, std::uint32_t shapeB);
   void findBorderContacts(bool reuse);
   /// The pairs of border @p border with the grid shapes @p first + i for each bit i of @p bits
   /// (shapes in its reach): reused if @p reuse (the border's reach is remembered) and neither

@@ -75,33 +75,8 @@ void Simulator::updateNeverPaired() {
   }
 }
 
-void Simulator::detectContacts() {
-  // Appending to contacts of another detection: this list is no basis for the next reuse.
-  const bool fromEmpty = contacts.empty();
-  const auto start = static_cast<std::uint32_t>(contacts.size());
-  updateGeometry();
-  // Reuse needs the last detection's complete list (eraseContacts kept it aside).
-  // (Only pairs of unmoved shapes are reused: none when every shape moved.)
-  const bool reuse = restSkipping && previousValid_ && fromEmpty;
-  previousIndexed_ = false;  // indexed at most once a detection, for the shapes of now
-  previousCursor_ = 0;
-  previousCount_ = previousContacts_.size();
-  reusedBegin_ = 0;  // no run of reused contacts yet
-  reusedEnd_ = 0;
-  if (pairChains_.size() != shapes_.size()) {  // new shapes: no pair in either list yet
-    pairChains_.resize(shapes_.size());
-    previousChains_.resize(shapes_.size());
-  }
-  nextListStamp();
-  fitCountedObjects();
-  contactsSolved_ = false;  // these contacts, until the solver gives them forces
-  statistics_.reusedContacts = 0;
-  // (Without new objects or objects with rules, there is nothing to look at.)
-  if (neverPaired_.objects != bodyStates_.size() || !neverPaired_.rules.empty())
-    updateNeverPaired();
-  broadPhase_.setNeverPaired(neverPaired_.bits);
-  broadPhase_.findPairs(gridBoxes_, gridMovedBits_, pairs_,
-                        gridExtentsCount_ == gridShapes_.size() ? &gridExtents_ : nullptr);
+// Inline: detectContacts() calls it once, for the default mode (a call cost small worlds' steps).
+THYRIX_ALWAYS_INLINE void Simulator::detectPairs(bool reuse) {
   // The pairs of two circles in reach (most of a crowd's) are batched: their square roots and
   // divisions, in a short loop of their own, overlap from pair to pair (measured: one pair
   // at a time, each waited for the last). A batch is emptied before any other pair adds
@@ -148,12 +123,87 @@ void Simulator::detectContacts() {
   }
   flush();
   findBorderContacts(reuse);
+}
+
+void Simulator::detectContacts() {
+  // Appending to contacts of another detection: this list is no basis for the next reuse.
+  const bool fromEmpty = contacts.empty();
+  const auto start = static_cast<std::uint32_t>(contacts.size());
+  if (referenceMode) {
+    updateGeometryPlainly();
+    cachesForgotten_ = true;
+  } else {
+    if (cachesForgotten_) forgetCaches();  // (they did not follow the reference mode's steps)
+    cachesForgotten_ = false;
+    updateGeometry();
+  }
+  // Reuse needs the last detection's complete list (eraseContacts kept it aside).
+  // (Only pairs of unmoved shapes are reused: none when every shape moved.)
+  const bool reuse = restSkipping && !referenceMode && previousValid_ && fromEmpty;
+  previousIndexed_ = false;  // indexed at most once a detection, for the shapes of now
+  previousCursor_ = 0;
+  previousCount_ = previousContacts_.size();
+  reusedBegin_ = 0;  // no run of reused contacts yet
+  reusedEnd_ = 0;
+  if (pairChains_.size() != shapes_.size()) {  // new shapes: no pair in either list yet
+    pairChains_.resize(shapes_.size());
+    previousChains_.resize(shapes_.size());
+  }
+  nextListStamp();
+  fitCountedObjects();
+  contactsSolved_ = false;  // these contacts, until the solver gives them forces
+  statistics_.reusedContacts = 0;
+  if (referenceMode) {
+    findPairsPlainly();
+    for (const BoxPair& pair : pairs_)
+      addContactsPlainly(gridShapes_[pair.first], gridShapes_[pair.second]);
+    findBorderContactsPlainly();
+  } else {
+    // (Without new objects or objects with rules, there is nothing to look at.)
+    if (neverPaired_.objects != bodyStates_.size() || !neverPaired_.rules.empty())
+      updateNeverPaired();
+    broadPhase_.setNeverPaired(neverPaired_.bits);
+    broadPhase_.findPairs(gridBoxes_, gridMovedBits_, pairs_,
+                          gridExtentsCount_ == gridShapes_.size() ? &gridExtents_ : nullptr);
+    // Above its all-pairs limit the broad phase gives the pairs in the order of its grid, its
+    // sweep or its memory of earlier calls; sorted, the contacts' order, which the solvers
+    // follow, depends on the boxes alone (as a restored world's must).
+    if (pairs_.size() > 1 && gridBoxes_.size() > BroadPhase::smallCount) sortPairs();
+    detectPairs(reuse);
+  }
   flushReused();
   if (contacts.size() > scannedListLength) chainFirstPairs(start);
   contactsComplete_ = fromEmpty;
   previousValid_ = false;  // used: the next detection compares against this one
   statistics_.contacts = contacts.size();
-  for (const std::uint32_t index : customObjects_) objects[index].updateSensors(*this);
+  if (referenceMode) {
+    for (PhysicalObject& object : objects) object.updateSensors(*this);
+  } else {
+    for (const std::uint32_t index : customObjects_) objects[index].updateSensors(*this);
+  }
+}
+
+void Simulator::sortPairs() {
+  // A counting sort by first box, then an insertion sort by the whole pair, which only moves
+  // pairs within their first box's few.
+  const auto before = [](const BoxPair& a, const BoxPair& b) {
+    return (std::uint64_t{a.first} << 32 | a.second) < (std::uint64_t{b.first} << 32 | b.second);
+  };
+  if (std::is_sorted(pairs_.begin(), pairs_.end(), before)) return;
+  pairStart_.assign(gridBoxes_.size() + 1, 0);
+  std::uint32_t* const start = pairStart_.data();
+  for (const BoxPair& pair : pairs_) ++start[pair.first + 1];
+  for (std::size_t i = 1; i < pairStart_.size(); ++i) start[i] += start[i - 1];
+  sortedPairs_.resize(pairs_.size());
+  BoxPair* const sorted = sortedPairs_.data();
+  for (const BoxPair& pair : pairs_) sorted[start[pair.first]++] = pair;
+  for (std::size_t k = 1; k < sortedPairs_.size(); ++k) {
+    const BoxPair pair = sorted[k];
+    std::size_t j = k;
+    for (; j > 0 && before(pair, sorted[j - 1]); --j) sorted[j] = sorted[j - 1];
+    sorted[j] = pair;
+  }
+  std::swap(pairs_, sortedPairs_);
 }
 
 void Simulator::findBorderContacts(bool reuse) {
@@ -418,6 +468,34 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
       append(collideCapsules(ga.p0, ga.p1, ga.radius, gb.p0, gb.p1, gb.radius, margin));
       break;
   }
+}
+
+void Simulator::addContactsPlainly(std::uint32_t shapeA, std::uint32_t shapeB) {
+  if (shapes_[shapeB].type < shapes_[shapeA].type) std::swap(shapeA, shapeB);
+  const Shape& a = shapes_[shapeA];
+  const Shape& b = shapes_[shapeB];
+  if (!a.movable && !b.movable) return;
+  if (a.group != 0 && a.group == b.group) return;
+  if (a.body == b.body &&
+      !ownShapesMayTouch(multiBodies_[a.body], bodyStates_[a.body].firstShape, shapeA, shapeB))
+    return;
+  const ShapeGeometry& ga = geometry_[shapeA];
+  const ShapeGeometry& gb = geometry_[shapeB];
+  const real margin =
+      (a.type == ShapeType::HalfPlane ? gb.margin : std::min(ga.margin, gb.margin)) + ga.travel +
+      gb.travel;
+  Manifold manifold;
+  if (a.type == ShapeType::HalfPlane && b.type == ShapeType::Circle)
+    manifold = collideHalfPlaneCircle(ga.p0, ga.p1, gb.p0, gb.radius, margin);
+  else if (a.type == ShapeType::HalfPlane)
+    manifold = collideHalfPlaneCapsule(ga.p0, ga.p1, gb.p0, gb.p1, gb.radius, margin);
+  else if (a.type == ShapeType::Circle && b.type == ShapeType::Circle)
+    manifold = collideCircles(ga.p0, ga.radius, gb.p0, gb.radius, margin);
+  else if (a.type == ShapeType::Circle)
+    manifold = collideCircleCapsule(ga.p0, ga.radius, gb.p0, gb.p1, gb.radius, margin);
+  else
+    manifold = collideCapsules(ga.p0, ga.p1, ga.radius, gb.p0, gb.p1, gb.radius, margin);
+  appendContacts(shapeA, shapeB, manifold);
 }
 
 void Simulator::indexContacts() {

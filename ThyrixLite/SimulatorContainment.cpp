@@ -203,7 +203,10 @@ void Simulator::stepInParts() {
       left *= more;
       continue;
     }
-    Integrator::integrateExcept(objects, customObjects_, substep_);
+    if (referenceMode)
+      integrator_->integrate(*this, substep_);
+    else
+      Integrator::integrateExcept(objects, customObjects_, substep_);
     time -= substep_;
     --left;
   }

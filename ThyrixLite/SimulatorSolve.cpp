@@ -121,8 +121,8 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
     }
     statistics_.restingContacts = contacts.size() - activeCount;
   } else {
-    forceFree =
-        !hasMultiBodies_ && std::all_of(contacts.items_.begin(), contacts.items_.end(), holds);
+    forceFree = !referenceMode && !hasMultiBodies_ &&
+                std::all_of(contacts.items_.begin(), contacts.items_.end(), holds);
   }
   if (forceFree) {  // no force: contacts and object contact lists already say 0
     updateTactileSensors();
@@ -160,7 +160,7 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
   // searchPreviousForce() looks further. A contact's force depends only on its identity, not
   // on the order of the search. Rows that no island solve starts from get theirs back to 0
   // (satisfied islands, solveIsland()); Baraff's islands ignore them.
-  const bool warmStart = settings_.warmStart && previousSolved_;
+  const bool warmStart = settings_.warmStart && previousSolved_ && !referenceMode;
   const GlobalContactInfo* const previous = previousContacts_.data();
   const std::size_t previousCount = previousContacts_.size();
   std::size_t hint = 0;
@@ -189,6 +189,9 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
       }
     }
   }
+  if (referenceMode && settings_.warmStart && previousSolved_)
+    for (std::size_t k = 0; k < contactCount; ++k)
+      rows[k].force = previousForcePlainly(contacts.items_[k]);
   // A joint limit is a row of its object alone; its Jacobian is the object's business.
   for (std::size_t j = 0; j < internal_.size(); ++j) {
     const std::uint32_t owner = internalOwner_[j];
@@ -261,6 +264,12 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
     solveIsland(island);
   }
   if (partial) return false;
+  // No force anywhere: the step the judgment above returns early from (the reference mode comes
+  // here): the velocities are the free ones, and neither divided nor checked against the walls.
+  if (!hasMultiBodies_ && statistics_.solvedIslands == 0) {
+    updateTactileSensors();
+    return false;
+  }
   parts_ = mayDivide_ ? partsNeeded({touched, movedCount}) : 1;
   // The rows' forces to their contacts (those left out keep 0).
   const auto storeForces = [&] {

@@ -5,7 +5,6 @@
 #include <ThyrixLite/Simulator.h>
 
 #include <cstdio>
-#include <limits>
 #include <sstream>
 
 namespace thyrix {
@@ -196,25 +195,17 @@ void Simulator::applyState(const WorldState& state) {
   dragLocalPoint_ = dragLocalPoint;
   dragTarget_ = dragTarget;
   dragMaxStep_ = dragMaxStep;
-  // Rest skipping's memory: every body is looked at again (its filters never match), with its
-  // shapes' last places known or not as saved, so that their travels come out as they would.
-  const real unknownPose = std::numeric_limits<real>::quiet_NaN();
-  for (std::size_t i = 0; i < bodyStates_.size(); ++i) {
-    BodyState& body = bodyStates_[i];
-    body.r = {unknownPose, unknownPose};
-    body.alpha = unknownPose;
-    body.fixed = !known[i] ? BodyState::unknown : objects[i].fixed ? 1 : 0;
-    body.filterKey = ~std::uint64_t{0};
-  }
+  // Each shape's last place, its body known or not as saved, so that the travels come out as
+  // they would; the caches are then rebuilt by the next detection.
+  for (std::size_t i = 0; i < bodyStates_.size(); ++i)
+    bodyStates_[i].fixed = !known[i] ? BodyState::unknown : objects[i].fixed ? 1 : 0;
   for (std::size_t s = 0; s < geometry_.size(); ++s) {
     geometry_[s].p0 = places[s].p0;
     geometry_[s].p1 = places[s].p1;
     geometry_[s].travel = places[s].travel;
-    shapePoses_[s].r = {unknownPose, unknownPose};  // (a capsule's axis is computed again)
-    shapePoses_[s].alpha = unknownPose;
   }
-  reachShapes_ = std::numeric_limits<std::size_t>::max();  // every border's reach retested
-  broadPhase_ = BroadPhase();                              // no memory of the boxes of other steps
+  forgetCaches();
+  cachesForgotten_ = false;
   restoreContacts(std::move(list), complete, solved);
 }
 

@@ -4,20 +4,12 @@
 // (the last step's travel, the warm start's forces, a controller's random stream) gives another
 // run (the test ContactMemoryIsState shows that the pile does depend on it).
 
-#include <Agents/IunctusGrasper.h>
-#include <Agents/IunctusSimulator.h>
-#include <Agents/PacEatingSimulator.h>
-#include <Agents/PacSimulator.h>
-#include <Agents/SpherusSimulator.h>
-#include <Controller/NeuralController.h>
-#include <Controller/RandomController.h>
 #include <Scenes.h>
-#include <ThyrixLite/Border.h>
 #include <ThyrixLite/Circle.h>
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixLite/Simulator.h>
 #include <ThyrixLite/WorldState.h>
-#include <ThyrixPro/ArticulatedAgentQuasistatic.h>
+#include "support/StateScenes.h"
 
 #include <gtest/gtest.h>
 
@@ -30,117 +22,23 @@
 namespace thyrix {
 namespace {
 
-/// A world to test, built afresh by each call.
-using Factory = std::function<std::unique_ptr<Simulator>()>;
-
-/// A pile of 60 circles falling into an open box (more boxes than the broad phase tests all
-/// pairs of), one of them dragged by the mouse.
-std::unique_ptr<Simulator> pile() {
-  auto simulator = std::make_unique<Simulator>();
-  simulator->setGravity({0, real(-2)});
-  const auto bodies = scenes::addPile(*simulator, 60, 3);
-  simulator->startDrag(*bodies[7], bodies[7]->r + Vector2{real(0.2), 0});
-  simulator->dragTo({real(1), real(9)});
-  return simulator;
-}
-
-/// Circles and capsules jammed into a corner, pushing each other apart.
-std::unique_ptr<Simulator> mixedPile() {
-  auto simulator = std::make_unique<Simulator>();
-  scenes::addMixedPile(*simulator, 30, 4);
-  return simulator;
-}
-
-/// An articulated chain of 5 links over a floor, curled by its joint torques until its links
-/// meet, its base falling.
-std::unique_ptr<Simulator> chain() {
-  auto simulator = std::make_unique<Simulator>();
-  simulator->setGravity({0, real(-1)});
-  simulator->registerObject(std::make_unique<Border>(Vector2{0, 0}, Vector2{0, 1}));
-  auto& agent = simulator->registerObject(std::make_unique<ArticulatedAgentQuasistatic>(
-      std::vector<ArticulatedBasePart>{ArticulatedBasePart::circle(real(0.5), 2)},
-      std::vector<ArticulatedLimb>{
-          ArticulatedLimb::chain({real(0.5), 0}, 5, real(0.8), real(0.15), real(0.5))}));
-  agent.setPose({0, real(1.5)}, 0);
-  for (int i = 1; i < 5; ++i) agent.setJointTorque(i, real(0.3));
-  agent.setServoTarget(0, real(0.4), 5);
-  return simulator;
-}
-
-std::unique_ptr<Simulator> spherus() {
-  SpherusSimulator::Options options;
-  return std::make_unique<SpherusSimulator>(options, std::make_unique<RandomController>(7, 5, 30));
-}
-
-std::unique_ptr<Simulator> spherusNeural() {
-  // A recurrent network carries its neurons' states from step to step.
-  NetworkSpec spec;
-  spec.kind = NetworkKind::Ctrnn;
-  spec.layers = {Spherus::sensorCount, 6, Spherus::effectorCount};
-  auto controller = std::make_unique<NeuralController>(spec, real(0.01));
-  std::vector<real> parameters(controller->parameterCount());
-  MTRandom random(11);
-  for (real& value : parameters) value = static_cast<real>(random.uniform(-1, 1));
-  // (Slow neurons: their states carry over many steps.)
-  for (std::size_t i = 0; i < 6; ++i) parameters[i] = real(-1);
-  controller->setParameters(parameters);
-  SpherusSimulator::Options options;
-  return std::make_unique<SpherusSimulator>(options, std::move(controller));
-}
-
-std::unique_ptr<Simulator> pac() {
-  PacSimulator::Options options;
-  return std::make_unique<PacSimulator>(options, std::make_unique<RandomController>(3, 5, 40),
-                                        std::make_unique<RandomController>(4, 5, 40));
-}
-
-std::unique_ptr<Simulator> pacEating() {
-  PacSimulator::Options options;
-  return std::make_unique<PacEatingSimulator>(options,
-                                              std::make_unique<RandomController>(5, 5, 40));
-}
-
-std::unique_ptr<Simulator> iunctus() {
-  IunctusSimulator::Options options;
-  options.objects = 3;
-  return std::make_unique<IunctusSimulator>(options, std::make_unique<RandomController>(9, 5, 40));
-}
-
-std::unique_ptr<Simulator> iunctusGrasping() {
-  IunctusSimulator::Options options;
-  auto simulator = std::make_unique<IunctusSimulator>(options, nullptr);
-  simulator->useGrasper();
-  return simulator;
-}
-
-struct Scene {
-  const char* name;
-  Factory make;
-};
-
-const Scene scenesToTest[] = {
-    {"Pile", pile},
-    {"MixedPile", mixedPile},
-    {"Chain", chain},
-    {"Spherus", spherus},
-    {"SpherusNeural", spherusNeural},
-    {"Pac", pac},
-    {"PacEating", pacEating},
-    {"Iunctus", iunctus},
-    {"IunctusGrasping", iunctusGrasping},
-};
+using namespace state_scenes;
 
 constexpr int stepsBefore = 150;  // k
 constexpr int stepsAfter = 150;   // N
 
-using Parameters = std::tuple<int, ContactSolverKind, bool>;  // scene, solver, rest skipping
+/// Which caches and shortcuts the world runs with.
+enum class Caches { all, noRestSkipping, reference };
+
+using Parameters = std::tuple<int, ContactSolverKind, Caches>;  // scene, solver, caches
 
 class WorldStateTest : public ::testing::TestWithParam<Parameters> {
  protected:
   [[nodiscard]] std::unique_ptr<Simulator> make() const {
     auto simulator = scenesToTest[std::get<0>(GetParam())].make();
     simulator->setContactSolver(std::get<1>(GetParam()));
-    simulator->restSkipping = std::get<2>(GetParam());
+    simulator->restSkipping = std::get<2>(GetParam()) != Caches::noRestSkipping;
+    simulator->referenceMode = std::get<2>(GetParam()) == Caches::reference;
     return simulator;
   }
   static void run(Simulator& simulator, int steps) {
@@ -193,14 +91,16 @@ TEST_P(WorldStateTest, BranchesFromOneStateAreIdentical) {
 std::string parameterName(const ::testing::TestParamInfo<Parameters>& info) {
   return std::string(scenesToTest[std::get<0>(info.param)].name) +
          (std::get<1>(info.param) == ContactSolverKind::Baraff ? "Baraff" : "GaussSeidel") +
-         (std::get<2>(info.param) ? "" : "NoRestSkipping");
+         (std::get<2>(info.param) == Caches::all              ? ""
+          : std::get<2>(info.param) == Caches::noRestSkipping ? "NoRestSkipping"
+                                                              : "Reference");
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, WorldStateTest,
     ::testing::Combine(::testing::Range(0, static_cast<int>(std::size(scenesToTest))),
                        ::testing::Values(ContactSolverKind::Baraff, ContactSolverKind::GaussSeidel),
-                       ::testing::Bool()),
+                       ::testing::Values(Caches::all, Caches::noRestSkipping, Caches::reference)),
     parameterName);
 
 TEST(WorldState, RestingPileContinuesExactly) {
@@ -214,13 +114,13 @@ TEST(WorldState, RestingPileContinuesExactly) {
       auto simulator = std::make_unique<Simulator>();
       simulator->setContactSolver(solver);
       simulator->setGravity({0, real(-2)});
-      scenes::addPile(*simulator, 80, 5);
+      scenes::addPile(*simulator, 200, 5);
       return simulator;
     };
     const auto run = [](Simulator& simulator, int from, int steps) {
       for (int step = from; step < from + steps; ++step) {
         if (step % 50 == 0)
-          simulator.objects[3 + static_cast<std::size_t>(step / 50) % 80].externalForce = {
+          simulator.objects[3 + static_cast<std::size_t>(step / 50) % 200].externalForce = {
               real(0.5), 0};
         simulator.advanceTime();
       }

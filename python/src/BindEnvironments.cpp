@@ -137,6 +137,25 @@ void bindEnvironments(py::module_& m) {
             return fromVector2(checkedWorld(e).spherus().centre());
           },
           "The agent's centre (x, y).")
+      .def(
+          "save_state",
+          [](const SpherusEnvironment& e) {
+            checkedWorld(e);
+            const EnvironmentState state = e.saveState();
+            return py::make_tuple(state.world, state.seed, state.episode, state.step, state.score);
+          },
+          "The environment's state: (world state, seed, episode, step, score).")
+      .def(
+          "restore_state",
+          [](SpherusEnvironment& e, const WorldState& world, std::uint64_t seed,
+             std::uint64_t episode, long step, double score) {
+            e.restoreState({world, seed, episode, step, score});
+            py::array_t<real> observation(observationSize);
+            e.observe(spanOf(observation));
+            return observation;
+          },
+          py::arg("world"), py::arg("seed"), py::arg("episode"), py::arg("step"), py::arg("score"),
+          "Puts the environment in a saved state; returns the observation.")
       .def_property_readonly("step_index", &SpherusEnvironment::stepIndex,
                              "Steps taken in the episode.")
       .def_property_readonly("episode", &SpherusEnvironment::episode,

@@ -5,10 +5,14 @@
 #include <ThyrixLite/CappedRectangle.h>
 #include <ThyrixLite/Circle.h>
 #include <ThyrixLite/Simulator.h>
+#include <ThyrixLite/WorldState.h>
 
+#include <pybind11/operators.h>
 #include <pybind11/stl.h>
 
 #include <memory>
+#include <sstream>
+#include <string>
 
 namespace py = pybind11;
 
@@ -69,7 +73,46 @@ py::dict contactArrays(const Simulator& simulator) {
 
 }  // namespace
 
+namespace {
+
+/// @p state in its binary form (WorldState::write()).
+py::bytes stateBytes(const WorldState& state) {
+  std::ostringstream out;
+  state.write(out);
+  return py::bytes(out.str());
+}
+
+/// The state written in @p data (WorldState::read()).
+WorldState stateFromBytes(const py::bytes& data) {
+  std::istringstream in(std::string{data});
+  return WorldState::read(in);
+}
+
+}  // namespace
+
 void bindWorld(py::module_& m) {
+  py::class_<WorldState>(m, "WorldState",
+                         "Everything that can change a simulator's next step, as a value "
+                         "(Simulator.save_state()). Copyable and picklable: its bytes are its "
+                         "versioned, checksummed binary form.")
+      .def(py::init(&stateFromBytes), py::arg("data"),
+           "The state written in `data` (bytes(state)); raises RuntimeError if it is not "
+           "one, truncated or corrupt.")
+      .def("__bytes__", &stateBytes, "The versioned, checksummed binary form.")
+      .def("hash", &WorldState::hash, "A 64-bit hash of the whole state.")
+      .def_property_readonly("make_up", &WorldState::makeUp,
+                             "The make-up it was saved from: object types and shapes.")
+      .def(py::self == py::self)  // NOLINT(misc-redundant-expression)
+      .def("__copy__", [](const WorldState& state) { return WorldState(state); })
+      .def(
+          "__deepcopy__", [](const WorldState& state, py::dict) { return WorldState(state); },
+          py::arg("memo"))
+      .def(py::pickle([](const WorldState& state) { return py::make_tuple(stateBytes(state)); },
+                      [](const py::tuple& saved) {
+                        if (saved.size() != 1) throw py::value_error("not a pickled WorldState");
+                        return stateFromBytes(saved[0].cast<py::bytes>());
+                      }));
+
   py::enum_<ContactSolverKind>(m, "ContactSolver", "The contact solver of a Simulator.")
       .value("BARAFF", ContactSolverKind::Baraff, "Baraff's pivoting method: exact")
       .value("GAUSS_SEIDEL", ContactSolverKind::GaussSeidel, "projected Gauss-Seidel: iterative");
@@ -270,6 +313,14 @@ void bindWorld(py::module_& m) {
           "Gravity (m/s^2); (0, 0) by default.")
       .def_readwrite("rest_skipping", &Simulator::restSkipping,
                      "Leave bodies at rest out of the step (same results, faster).")
+      .def_readwrite("reference_mode", &Simulator::referenceMode,
+                     "Every cache and shortcut off: the plain algorithm, bit-identical results, "
+                     "much slower (the tests' oracle).")
+      .def("save_state", &Simulator::saveState,
+           "Everything that can change the next step, as a WorldState.")
+      .def("restore_state", &Simulator::restoreState, py::arg("state"),
+           "Puts the world in `state`, saved from this world or one built the same way; "
+           "raises ValueError saying what differs otherwise (the world is then unchanged).")
       .def("contacts", &contactArrays,
            "The last step's contacts as a dict of arrays: body_a, body_b (object indices), "
            "point (K, 2), normal (K, 2, from a to b), depth (K,), force (K,).");

@@ -50,6 +50,35 @@ StepOutcome SpherusEnvironment::step(std::span<const real> action, std::span<rea
   return outcome;
 }
 
+EnvironmentState SpherusEnvironment::saveState() const {
+  return {world_->saveState(), seed_, episode_, step_, score_};
+}
+
+void SpherusEnvironment::restoreState(const EnvironmentState& state) {
+  // The world of the state's episode, built as start() builds it, then put in the state; the
+  // environment is unchanged if the state does not fit it.
+  const std::uint64_t seed = seed_;
+  const std::uint64_t episode = episode_;
+  const long step = step_;
+  const double score = score_;
+  std::unique_ptr<SpherusEpisode> world = std::move(world_);
+  seed_ = state.seed;
+  episode_ = state.episode;
+  try {
+    start();
+    world_->restoreState(state.world);
+  } catch (...) {
+    world_ = std::move(world);
+    seed_ = seed;
+    episode_ = episode;
+    step_ = step;
+    score_ = score;
+    throw;
+  }
+  step_ = state.step;
+  score_ = state.score;
+}
+
 void SpherusEnvironment::observe(std::span<real> observation) const {
   const std::span<const real> sensors = world_->spherus().sensors();
   std::copy(sensors.begin(), sensors.end(), observation.begin());

@@ -4,12 +4,23 @@
 /// actions from outside, rewarded by the increase of SpherusTask's fitness.
 
 #include <SpherusTask.h>
+#include <ThyrixLite/WorldState.h>
 
 #include <cstdint>
 #include <memory>
 #include <span>
 
 namespace thyrix::python {
+
+/// Everything an environment's next step depends on: its episode's world state, and where it
+/// is in its stream of episodes and in the episode.
+struct EnvironmentState {
+  WorldState world;           ///< the episode's simulator
+  std::uint64_t seed = 0;     ///< the stream's seed
+  std::uint64_t episode = 0;  ///< the episode's index in the stream
+  long step = 0;              ///< steps taken in the episode
+  double score = 0;           ///< the task's fitness after the last step
+};
 
 /// What one step returns besides the observation.
 struct StepOutcome {
@@ -39,6 +50,11 @@ class SpherusEnvironment {
   StepOutcome step(std::span<const real> action, std::span<real> observation);
   /// Writes the current sensors to @p observation.
   void observe(std::span<real> observation) const;
+  /// The environment's state (reset() must have been called).
+  [[nodiscard]] EnvironmentState saveState() const;
+  /// Puts the environment in @p state: the episode's world built again, then restored.
+  /// @throws InvalidArgument naming "WorldState" if the state is not of this task's worlds
+  void restoreState(const EnvironmentState& state);
 
   /// The current episode's world (null before the first reset).
   [[nodiscard]] const SpherusEpisode* world() const { return world_.get(); }

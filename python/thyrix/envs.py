@@ -5,6 +5,7 @@ the GIL released. When gymnasium is importable, the environments derive from ``g
 use its ``Box`` spaces and are registered as ``thyrix/Spherus-v0``.
 """
 
+import collections
 import secrets
 
 import numpy as np
@@ -19,6 +20,11 @@ except ImportError:  # pragma: no cover - depends on the machine
 
 SENSORS = 35  #: Spherus's sensors: the observation's length
 EFFECTORS = 5  #: Spherus's effectors: the action's length
+
+#: A SpherusEnv's state (SpherusEnv.save_state()): the episode's ``world`` (a WorldState), the
+#: stream's ``seed``, the ``episode``'s index, the ``step`` in it and the task's ``score`` so far.
+#: Picklable and copyable.
+SpherusEnvState = collections.namedtuple("SpherusEnvState", "world seed episode step score")
 
 
 def _box(shape):
@@ -104,6 +110,22 @@ class SpherusEnv(_Base):
             raise ValueError("reset() must be called before step()")
         observation, reward, terminated, truncated = self._core.step(action)
         return observation, reward, terminated, truncated, {}
+
+    def save_state(self):
+        """A snapshot of the environment (SpherusEnvState): restore_state() of it, in this or
+        in another SpherusEnv made with the same arguments, goes on exactly as this one does
+        from here, bit for bit (branching: try several actions from one point)."""
+        if not self._started:
+            raise ValueError("reset() must be called before save_state()")
+        return SpherusEnvState(*self._core.save_state())
+
+    def restore_state(self, state):
+        """Puts the environment in ``state`` (from save_state()); returns the observation.
+        Raises ValueError saying what differs if the state is of another task's world (the
+        environment is then unchanged)."""
+        observation = self._core.restore_state(*state)
+        self._started = True
+        return observation
 
     def render(self):
         """The arena as an SVG document (a string; no display server needed)."""
