@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -19,14 +20,20 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr int requestTag = 1;  // rank -> leader: the last chunk's fitnesses, and "more, please"
+constexpr int requestTag = 1;  // rank -> leader: the last chunk's fitnesses, and maybe "more"
 constexpr int chunkTag = 2;    // leader -> rank: the next chunk (first episode, count; 0: done)
 
 // A batch's header, broadcast by the leader: command (0 stop, 1 evaluate), genomes, dimension,
 // trials, seed, generation.
 constexpr int headerSize = 6;
-// A request: threads, first episode, count, busy seconds this generation, then the fitnesses.
-constexpr std::size_t requestHead = 4;
+// A request: threads, more (1: send another chunk, 0: this rank is done with the generation),
+// first episode, count, busy seconds this generation, then the fitnesses of that chunk.
+constexpr std::size_t requestHead = 5;
+
+// The longest sleep between two tests of a message: a rank asks for its next chunk while it
+// still runs one, so the answer may take this long without leaving it idle, and each wake-up
+// costs the cores about 15 us of CPU time.
+constexpr auto longestPause = std::chrono::microseconds(400);
 
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -41,7 +48,7 @@ void waitFor(MPI_Request& request) {
     MPI_Test(&request, &done, MPI_STATUS_IGNORE);
     if (done) return;
     std::this_thread::sleep_for(pause);
-    pause = std::min(pause * 2, std::chrono::microseconds(100));
+    pause = std::min(pause * 2, longestPause);
   }
 }
 
@@ -63,7 +70,8 @@ struct MpiEvaluation::State {
   std::vector<double> flat;                  // the genomes, one after the other
   std::vector<std::vector<double>> genomes;  // other ranks: the genomes received
   std::vector<double> message;
-  std::vector<std::size_t> threads;  // leader: every rank's threads, as last reported
+  std::vector<std::size_t> threads;          // leader: every rank's threads, as last reported
+  std::optional<Clock::time_point> lastEnd;  // leader: when the last evaluation ended
 
   // Leader: broadcasts @p header (and waits for it to leave).
   void broadcast(std::uint64_t (&header)[headerSize]) {
@@ -123,10 +131,12 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
   State& s = *state_;
   if (s.rank != 0) throw std::logic_error("MpiEvaluation::distribute: only rank 0 distributes");
   const auto start = Clock::now();
+  if (s.lastEnd) betweenSeconds_ += std::chrono::duration<double>(start - *s.lastEnd).count();
   const std::size_t total = episodes.size();
   if (s.size == 1) {
     job(batch, 0, episodes);
     times_[0].busySeconds += secondsSince(start);
+    s.lastEnd = Clock::now();
     return;
   }
   const std::size_t dimension = batch.genomes.empty() ? 0 : batch.genomes[0].size();
@@ -184,7 +194,7 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
       }
     });
     std::vector<double> busy(static_cast<std::size_t>(s.size), 0.0);
-    int finished = 0;  // ranks told that the generation is done
+    int finished = 0;  // ranks that sent their last fitnesses
     auto pause = std::chrono::microseconds(10);
     while (finished < s.size - 1) {
       int arrived = 0;
@@ -192,7 +202,7 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
       MPI_Iprobe(MPI_ANY_SOURCE, requestTag, s.comm, &arrived, &status);
       if (!arrived) {
         std::this_thread::sleep_for(pause);
-        pause = std::min(pause * 2, std::chrono::microseconds(100));
+        pause = std::min(pause * 2, longestPause);
         continue;
       }
       pause = std::chrono::microseconds(10);
@@ -202,11 +212,15 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
       MPI_Recv(s.message.data(), length, MPI_DOUBLE, status.MPI_SOURCE, requestTag, s.comm,
                MPI_STATUS_IGNORE);
       const auto source = static_cast<std::size_t>(status.MPI_SOURCE);
-      const auto first = static_cast<std::size_t>(s.message[1]);
-      const auto count = static_cast<std::size_t>(s.message[2]);
-      busy[source] = s.message[3];
+      const auto first = static_cast<std::size_t>(s.message[2]);
+      const auto count = static_cast<std::size_t>(s.message[3]);
+      busy[source] = s.message[4];
       std::copy_n(s.message.begin() + requestHead, count,
                   episodes.begin() + static_cast<std::ptrdiff_t>(first));
+      if (s.message[1] == 0) {
+        ++finished;
+        continue;
+      }
       {
         std::lock_guard lock(mutex);
         s.threads[source] = std::max<std::size_t>(1, static_cast<std::size_t>(s.message[0]));
@@ -214,7 +228,6 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
       const auto [nextFirst, nextCount] = take(s.threads[source]);
       std::uint64_t reply[2] = {nextFirst, nextCount};
       MPI_Send(reply, 2, MPI_UINT64_T, status.MPI_SOURCE, chunkTag, s.comm);
-      if (nextCount == 0) ++finished;
     }
     local.join();
     busy[0] = localBusy;
@@ -224,6 +237,7 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
       times_[r].idleSeconds += std::max(0.0, wall - busy[r]);
     }
   }
+  s.lastEnd = Clock::now();
   s.broken = false;
   if (localError) std::rethrow_exception(localError);
 }
@@ -255,24 +269,35 @@ void MpiEvaluation::serve(std::size_t threads, const ChunkJob& job) {
     batch.options.trials = header[3];
     batch.options.seed = header[4];
     batch.options.generation = header[5];
+    // The fitnesses of the chunk last run (none yet), sent with the request for the next chunk.
     s.message.assign(requestHead, 0.0);
     s.message[0] = static_cast<double>(threads);
-    double busy = 0;
-    for (;;) {
+    std::uint64_t reply[2] = {};
+    auto send = [&](bool more) {
+      s.message[1] = more ? 1 : 0;
       MPI_Send(s.message.data(), static_cast<int>(s.message.size()), MPI_DOUBLE, 0, requestTag,
                s.comm);
-      std::uint64_t reply[2] = {};
-      MPI_Irecv(reply, 2, MPI_UINT64_T, 0, chunkTag, s.comm, &request);
+      if (more) MPI_Irecv(reply, 2, MPI_UINT64_T, 0, chunkTag, s.comm, &request);
+    };
+    send(true);
+    double busy = 0;
+    for (;;) {
       waitFor(request);
-      if (reply[1] == 0) break;
-      s.message.resize(requestHead + reply[1]);
-      s.message[1] = static_cast<double>(reply[0]);
-      s.message[2] = static_cast<double>(reply[1]);
+      const std::uint64_t chunkFirst = reply[0];
+      const std::uint64_t chunkCount = reply[1];
+      if (chunkCount == 0) break;
+      // Asks for the next chunk before running this one, so that the leader's answer travels
+      // while this rank works.
+      send(true);
+      s.message.resize(requestHead + chunkCount);
+      s.message[2] = static_cast<double>(chunkFirst);
+      s.message[3] = static_cast<double>(chunkCount);
       const auto begin = Clock::now();
-      job(batch, reply[0], std::span<double>(s.message).subspan(requestHead));
+      job(batch, chunkFirst, std::span<double>(s.message).subspan(requestHead));
       busy += secondsSince(begin);
-      s.message[3] = busy;
+      s.message[4] = busy;
     }
+    send(false);
     s.broken = false;
   }
 }

@@ -25,7 +25,8 @@ struct RankTime {
 /// serveEvaluations(task, pool, ranks), which evaluates what the leader hands out until the
 /// leader's MpiEvaluation is destroyed. The leader broadcasts the genomes and then hands out
 /// chunks of episodes on demand (guided: large first, smaller towards the end, so that no rank
-/// idles long); each rank runs its chunks on its own threads and the results are stored by
+/// idles long; a rank asks for its next chunk as it starts one, so that it never waits for the
+/// answer); each rank runs its chunks on its own threads and the results are stored by
 /// episode index, so the fitnesses equal those of evaluate() on one process, bit for bit, for
 /// any number of ranks and threads. Only the thread that made this object may call MPI
 /// (MPI_THREAD_FUNNELED). A rank whose task throws, or that dies, must end the whole job: if an
@@ -50,6 +51,9 @@ class MpiEvaluation {
   /// The leader's record of every rank's busy and idle time (index = rank) over the
   /// evaluations so far; empty on the other ranks.
   [[nodiscard]] const std::vector<RankTime>& rankTimes() const { return times_; }
+  /// Leader: the seconds from the end of each evaluation to the start of the next (the
+  /// strategy's work and the files, while the other ranks wait), summed; 0 on the other ranks.
+  [[nodiscard]] double betweenSeconds() const { return betweenSeconds_; }
   /// Ends the whole job at once with exit status @p status (MPI_Abort).
   [[noreturn]] void abort(int status) const;
 
@@ -78,6 +82,7 @@ class MpiEvaluation {
   struct State;
   std::unique_ptr<State> state_;
   std::vector<RankTime> times_;
+  double betweenSeconds_ = 0;
 };
 
 /// evaluate() over the ranks of @p ranks: called by the leader (rank 0) while the other ranks run

@@ -393,7 +393,7 @@ int evolve(const Options& o, const EvolveTask& task, const GenerationEvaluator& 
 
 #ifdef THYRIX_SPHERUS_EVOLVE_MPI
 // Rank 0 evolves and the other ranks evaluate what it hands out; then rank 0 prints each rank's
-// idle time.
+// idle time, and the time between generations, when only rank 0 works.
 int run(const Options& o, MpiEvaluation& ranks) {
   const EvolveTask task = makeTask(o, ranks.rank());
   ThreadPool pool(o.threads);
@@ -419,6 +419,10 @@ int run(const Options& o, MpiEvaluation& ranks) {
       std::printf("  rank %zu: idle %.3f s of %.3f s (%.1f%%)\n", r, times[r].idleSeconds, all,
                   all > 0 ? 100 * times[r].idleSeconds / all : 0.0);
     }
+    std::printf(
+        "between generations (rank 0 runs the strategy and writes the files, the other "
+        "ranks wait): %.3f s\n",
+        ranks.betweenSeconds());
   }
   return status;
 }
