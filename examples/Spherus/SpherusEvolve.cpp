@@ -28,6 +28,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -38,6 +39,8 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -306,10 +309,14 @@ void readCheckpoint(const fs::path& path, const Options& o, Run& run) {
   run.best = std::move(best);
 }
 
-void writeRecords(const fs::path& dir, const Options& o, const NetworkSpec& spec, const Run& run,
-                  bool checkpoint) {
-  writeFileAtomically(dir / "fitness.csv", fitnessCsv(run.history));
-  writeFileAtomically(
+// The run's files and their contents: the history, the best controller and, if @p checkpoint,
+// the checkpoint.
+std::vector<std::pair<fs::path, std::string>> records(const fs::path& dir, const Options& o,
+                                                      const NetworkSpec& spec, const Run& run,
+                                                      bool checkpoint) {
+  std::vector<std::pair<fs::path, std::string>> files;
+  files.emplace_back(dir / "fitness.csv", fitnessCsv(run.history));
+  files.emplace_back(
       dir / "fitness.svg",
       fitnessPlotSvg(run.history, "SpherusEvolve --task " + std::string(toString(o.goal)) +
                                       " --network " + o.network));
@@ -319,10 +326,47 @@ void writeRecords(const fs::path& dir, const Options& o, const NetworkSpec& spec
     genome.parameters.assign(run.best.begin(), run.best.end());
     std::ostringstream text;
     genome.write(text);
-    writeFileAtomically(dir / "best.genome", text.str());
+    files.emplace_back(dir / "best.genome", text.str());
   }
-  if (checkpoint) writeFileAtomically(dir / "checkpoint", checkpointText(o, run));
+  if (checkpoint) files.emplace_back(dir / "checkpoint", checkpointText(o, run));
+  return files;
 }
+
+void writeAll(const std::vector<std::pair<fs::path, std::string>>& files) {
+  for (const auto& [path, content] : files) writeFileAtomically(path, content);
+}
+
+// Writes each generation's files on a thread of its own while the next generation is evaluated,
+// so that the other ranks do not wait for the disk (a checkpoint holds megabytes); the contents
+// are made before, since the strategy moves on. A failed write is reported at the next write or
+// at finish().
+class RecordWriter {
+ public:
+  ~RecordWriter() {
+    if (thread_.joinable()) thread_.join();
+  }
+  void write(std::vector<std::pair<fs::path, std::string>> files) {
+    finish();
+    files_ = std::move(files);
+    thread_ = std::thread([this] {
+      try {
+        writeAll(files_);
+      } catch (...) {
+        error_ = std::current_exception();
+      }
+    });
+  }
+  // Waits for the last write; rethrows its error.
+  void finish() {
+    if (thread_.joinable()) thread_.join();
+    if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
+  }
+
+ private:
+  std::vector<std::pair<fs::path, std::string>> files_;
+  std::thread thread_;
+  std::exception_ptr error_;
+};
 
 int evolve(const Options& o, const EvolveTask& task, const GenerationEvaluator& evaluateGeneration,
            ProgressLine& progress) {
@@ -347,7 +391,8 @@ int evolve(const Options& o, const EvolveTask& task, const GenerationEvaluator& 
   run.strategy = makeStrategy(o, task.spherus.network.parameterCount());
   if (o.resume) readCheckpoint(checkpointPath, o, run);
   // Written before any work, so an unwritable directory is found at once.
-  writeRecords(dir, o, task.spherus.network, run, true);
+  writeAll(records(dir, o, task.spherus.network, run, true));
+  RecordWriter writer;
 
   EvaluationOptions evaluation;
   evaluation.trials = o.trials;
@@ -372,8 +417,8 @@ int evolve(const Options& o, const EvolveTask& task, const GenerationEvaluator& 
     for (double f : fitness) sum += f;
     run.history.push_back(
         {g, fitness[bestIndex], sum / static_cast<double>(fitness.size()), run.bestFitness});
-    writeRecords(dir, o, task.spherus.network, run,
-                 g % o.checkpointEvery == 0 || g == o.generations);
+    writer.write(records(dir, o, task.spherus.network, run,
+                         g % o.checkpointEvery == 0 || g == o.generations));
 
     const double elapsed = std::chrono::duration<double>(Clock::now() - begin).count();
     Progress p;
@@ -388,6 +433,7 @@ int evolve(const Options& o, const EvolveTask& task, const GenerationEvaluator& 
         elapsed / static_cast<double>(g - first + 1) * static_cast<double>(o.generations - g);
     progress.update(p);
   }
+  writer.finish();
   return 0;
 }
 
