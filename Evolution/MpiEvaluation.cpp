@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <climits>
+#include <cmath>
 #include <cstdlib>
 #include <exception>
 #include <mutex>
@@ -70,7 +71,8 @@ struct MpiEvaluation::State {
   std::vector<double> flat;                  // the genomes, one after the other
   std::vector<std::vector<double>> genomes;  // other ranks: the genomes received
   std::vector<double> message;
-  std::vector<std::size_t> threads;          // leader: every rank's threads, as last reported
+  std::vector<std::size_t> threads;  // leader: every rank's threads, as last reported
+  std::vector<double> speeds;  // leader: every rank's episodes a second in the last generation
   std::optional<Clock::time_point> lastEnd;  // leader: when the last evaluation ended
 
   // Leader: broadcasts @p header (and waits for it to leave).
@@ -157,22 +159,33 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
   MPI_Ibcast(s.flat.data(), flatCount, MPI_DOUBLE, 0, s.comm, &request);
   waitFor(request);
 
-  s.threads.assign(static_cast<std::size_t>(s.size), threads);
+  const auto ranks = static_cast<std::size_t>(s.size);
+  s.threads.assign(ranks, threads);
+  s.speeds.resize(ranks, 0.0);
+  std::vector<std::size_t> handed(ranks, 0);  // episodes handed to each rank
   std::mutex mutex;
   std::size_t next = 0;  // the first episode not yet handed out
   bool stop = false;     // the leader's task threw: hand out nothing more
-  // Guided self-scheduling: a rank with t of the T threads gets t/(4T) of what is left, in
-  // multiples of t, so chunks shrink as the generation ends and the ranks finish about together.
-  auto take = [&](std::size_t rankThreads) {
+  // Guided self-scheduling: a rank with the share w of the ranks' speed gets w/4 of what is left,
+  // in multiples of its threads, so chunks shrink as the generation ends and the ranks finish
+  // about together. The speeds are those of the last generation (a slow or busy node gets less);
+  // until every rank has one, the shares are those of the threads.
+  auto take = [&](std::size_t rank) {
     std::lock_guard lock(mutex);
-    std::size_t allThreads = 0;
-    for (std::size_t t : s.threads) allThreads += t;
+    const bool measured =
+        std::all_of(s.speeds.begin(), s.speeds.end(), [](double v) { return v > 0; });
+    double all = 0;
+    for (std::size_t r = 0; r < ranks; ++r)
+      all += measured ? s.speeds[r] : static_cast<double>(s.threads[r]);
+    const double share = (measured ? s.speeds[rank] : static_cast<double>(s.threads[rank])) / all;
     const std::size_t left = stop ? 0 : total - next;
-    std::size_t count = (left * rankThreads + 4 * allThreads - 1) / (4 * allThreads);
+    const std::size_t rankThreads = s.threads[rank];
+    auto count = static_cast<std::size_t>(std::ceil(static_cast<double>(left) * share / 4));
     count = std::min(left,
                      (std::max(count, rankThreads) + rankThreads - 1) / rankThreads * rankThreads);
     const std::pair<std::size_t, std::size_t> chunk{next, count};
     next += count;
+    handed[rank] += count;
     return chunk;
   };
   std::exception_ptr localError;
@@ -181,7 +194,7 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
     std::jthread local([&] {
       try {
         for (;;) {
-          const auto [first, count] = take(threads);
+          const auto [first, count] = take(0);
           if (count == 0) break;
           const auto begin = Clock::now();
           job(batch, first, episodes.subspan(first, count));
@@ -225,16 +238,17 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
         std::lock_guard lock(mutex);
         s.threads[source] = std::max<std::size_t>(1, static_cast<std::size_t>(s.message[0]));
       }
-      const auto [nextFirst, nextCount] = take(s.threads[source]);
+      const auto [nextFirst, nextCount] = take(source);
       std::uint64_t reply[2] = {nextFirst, nextCount};
       MPI_Send(reply, 2, MPI_UINT64_T, status.MPI_SOURCE, chunkTag, s.comm);
     }
     local.join();
     busy[0] = localBusy;
     const double wall = secondsSince(start);
-    for (std::size_t r = 0; r < busy.size(); ++r) {
+    for (std::size_t r = 0; r < ranks; ++r) {
       times_[r].busySeconds += busy[r];
       times_[r].idleSeconds += std::max(0.0, wall - busy[r]);
+      if (handed[r] > 0 && busy[r] > 0) s.speeds[r] = static_cast<double>(handed[r]) / busy[r];
     }
   }
   s.lastEnd = Clock::now();
