@@ -31,10 +31,12 @@ constexpr int headerSize = 6;
 // first episode, count, busy seconds this generation, then the fitnesses of that chunk.
 constexpr std::size_t requestHead = 5;
 
-// The longest sleep between two tests of a message: a rank asks for its next chunk while it
-// still runs one, so the answer may take this long without leaving it idle, and each wake-up
-// costs the cores about 15 us of CPU time.
-constexpr auto longestPause = std::chrono::microseconds(400);
+using Micros = std::chrono::microseconds;
+
+// Sleeps between two tests of a message: each wake-up costs the cores about 15 us of CPU time,
+// so a wait that may be long backs off from the shortest sleep to the longest.
+constexpr Micros shortestPause(10);
+constexpr Micros longestPause(400);
 
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -43,7 +45,7 @@ double secondsSince(Clock::time_point start) {
 // Waits for @p request, sleeping between tests (blocking MPI calls spin a core that this rank's
 // or another rank's threads could use).
 void waitFor(MPI_Request& request) {
-  auto pause = std::chrono::microseconds(10);
+  Micros pause = shortestPause;
   for (;;) {
     int done = 0;
     MPI_Test(&request, &done, MPI_STATUS_IGNORE);
@@ -206,19 +208,35 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
         stop = true;
       }
     });
-    std::vector<double> busy(static_cast<std::size_t>(s.size), 0.0);
+    std::vector<double> busy(ranks, 0.0);
+    // The seconds of work each rank holds beyond the chunk it runs, at its last speed (0: not
+    // known; infinite: it is done). Its next request comes when it starts that work, so an
+    // answer within a quarter of it leaves the rank no time idle; sleeping that long between
+    // tests spares the cores' time.
+    std::vector<double> held(ranks, 0.0);
+    held[0] = INFINITY;
+    auto longest = [&] {
+      {
+        std::lock_guard lock(mutex);
+        // The generation ends when the leader hears from the last rank: listen closely.
+        if (stop || next == total) return 10 * shortestPause;
+      }
+      const double shortest = *std::min_element(held.begin(), held.end());
+      if (!(shortest > 0)) return longestPause;
+      return std::clamp(Micros(static_cast<long>(std::min(shortest, 1.0) * 1e6 / 4)),
+                        5 * shortestPause, 5 * longestPause);
+    };
     int finished = 0;  // ranks that sent their last fitnesses
-    auto pause = std::chrono::microseconds(10);
+    Micros pause = shortestPause;
     while (finished < s.size - 1) {
       int arrived = 0;
       MPI_Status status;
       MPI_Iprobe(MPI_ANY_SOURCE, requestTag, s.comm, &arrived, &status);
       if (!arrived) {
         std::this_thread::sleep_for(pause);
-        pause = std::min(pause * 2, longestPause);
+        pause = std::min(pause * 2, longest());
         continue;
       }
-      pause = std::chrono::microseconds(10);
       int length = 0;
       MPI_Get_count(&status, MPI_DOUBLE, &length);
       s.message.resize(static_cast<std::size_t>(length));
@@ -232,8 +250,13 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
                   episodes.begin() + static_cast<std::ptrdiff_t>(first));
       if (s.message[1] == 0) {
         ++finished;
+        held[source] = INFINITY;
+        pause = std::min(pause, longest());
         continue;
       }
+      // A rank's first request of the generation: it waits with nothing to run, and asks for
+      // its next chunk as soon as this one arrives.
+      const bool firstRequest = handed[source] == 0 && count == 0;
       {
         std::lock_guard lock(mutex);
         s.threads[source] = std::max<std::size_t>(1, static_cast<std::size_t>(s.message[0]));
@@ -241,6 +264,8 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
       const auto [nextFirst, nextCount] = take(source);
       std::uint64_t reply[2] = {nextFirst, nextCount};
       MPI_Send(reply, 2, MPI_UINT64_T, status.MPI_SOURCE, chunkTag, s.comm);
+      held[source] = s.speeds[source] > 0 ? static_cast<double>(nextCount) / s.speeds[source] : 0;
+      pause = firstRequest ? shortestPause : longest();
     }
     local.join();
     busy[0] = localBusy;

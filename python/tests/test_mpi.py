@@ -88,9 +88,10 @@ def test_a_rank_that_raises_ends_the_job():
         import thyrix.mpi
         comm = MPI.COMM_WORLD
         if comm.rank == 1:
-            def fail(*args):
-                raise RuntimeError("this rank fails on purpose")
-            thyrix.mpi.evaluate_episodes = fail
+            class Failing(thyrix.mpi.EpisodeRunner):
+                def run(self, first, count):
+                    raise RuntimeError("this rank fails on purpose")
+            thyrix.mpi.EpisodeRunner = Failing
         genomes = np.zeros((40, 333)) if comm.rank == 0 else None
         thyrix.evaluate(genomes, steps=100, comm=comm)
         """)
