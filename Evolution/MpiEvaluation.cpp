@@ -210,9 +210,9 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
     });
     std::vector<double> busy(ranks, 0.0);
     // The seconds of work each rank holds beyond the chunk it runs, at its last speed (0: not
-    // known; infinite: it is done). Its next request comes when it starts that work, so an
-    // answer within a quarter of it leaves the rank no time idle; sleeping that long between
-    // tests spares the cores' time.
+    // known; infinite: it is done). Its next request comes when it starts that work, so the
+    // leader sleeps at most a quarter of the least of them between tests, and never more than
+    // longestPause (on a loaded machine a long sleep ends late).
     std::vector<double> held(ranks, 0.0);
     held[0] = INFINITY;
     auto longest = [&] {
@@ -224,7 +224,7 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
       const double shortest = *std::min_element(held.begin(), held.end());
       if (!(shortest > 0)) return longestPause;
       return std::clamp(Micros(static_cast<long>(std::min(shortest, 1.0) * 1e6 / 4)),
-                        5 * shortestPause, 5 * longestPause);
+                        5 * shortestPause, longestPause);
     };
     int finished = 0;  // ranks that sent their last fitnesses
     Micros pause = shortestPause;
