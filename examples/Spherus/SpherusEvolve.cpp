@@ -465,10 +465,8 @@ int run(const Options& o, MpiEvaluation& ranks) {
       std::printf("  rank %zu: idle %.3f s of %.3f s (%.1f%%)\n", r, times[r].idleSeconds, all,
                   all > 0 ? 100 * times[r].idleSeconds / all : 0.0);
     }
-    std::printf(
-        "between generations (rank 0 runs the strategy and writes the files, the other "
-        "ranks wait): %.3f s\n",
-        ranks.betweenSeconds());
+    std::printf("between generations (rank 0 runs the strategy, the other ranks wait): %.3f s\n",
+                ranks.betweenSeconds());
   }
   return status;
 }
