@@ -107,7 +107,9 @@ void bindEvaluation(py::module_& m) {
       .def(py::init<const SpherusTask&, py::handle, std::size_t, std::size_t, std::uint64_t,
                     std::uint64_t>(),
            py::arg("task"), py::arg("genomes"), py::arg("trials"), py::arg("threads"),
-           py::arg("seed"), py::arg("generation"))
+           py::arg("seed"), py::arg("generation"),
+           "The episodes of thyrix::evaluate() of `task` on the rows of `genomes` (a finite "
+           "P x parameters array), on `threads` threads.")
       .def_property_readonly("episodes", &EpisodeRunner::episodes, "genomes x trials")
       .def("run", &EpisodeRunner::run, py::arg("first"), py::arg("count"),
            "The fitnesses of episodes first to first + count - 1.");
