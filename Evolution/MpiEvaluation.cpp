@@ -42,16 +42,16 @@ double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Waits for @p request, sleeping between tests (blocking MPI calls spin a core that this rank's
-// or another rank's threads could use).
-void waitFor(MPI_Request& request) {
+// Waits for @p request, sleeping between tests, at most @p longest (blocking MPI calls spin a
+// core that this rank's or another rank's threads could use).
+void waitFor(MPI_Request& request, Micros longest = longestPause) {
   Micros pause = shortestPause;
   for (;;) {
     int done = 0;
     MPI_Test(&request, &done, MPI_STATUS_IGNORE);
     if (done) return;
     std::this_thread::sleep_for(pause);
-    pause = std::min(pause * 2, longestPause);
+    pause = std::min(pause * 2, longest);
   }
 }
 
@@ -77,11 +77,13 @@ struct MpiEvaluation::State {
   std::vector<double> speeds;  // leader: every rank's episodes a second in the last generation
   std::optional<Clock::time_point> lastEnd;  // leader: when the last evaluation ended
 
-  // Leader: broadcasts @p header (and waits for it to leave).
+  // Leader: broadcasts @p header (and waits for it to leave); other ranks: receives it. These
+  // wait here, their cores idle, while the leader runs the strategy, so they test often: a late
+  // wake-up delays their whole generation.
   void broadcast(std::uint64_t (&header)[headerSize]) {
     MPI_Request request;
     MPI_Ibcast(header, headerSize, MPI_UINT64_T, 0, comm, &request);
-    waitFor(request);
+    waitFor(request, 5 * shortestPause);
   }
 };
 
