@@ -73,7 +73,8 @@ for i in range(1, n + 1):
     text = open(f"{work}/job2.{i}.out").read()
     ranks = {int(r): (float(idle), float(of)) for r, idle, of in
              re.findall(r"rank (\d): idle ([0-9.]+) s of ([0-9.]+) s", text)}
-    between = float(re.search(r"wait\): ([0-9.]+) s", text).group(1))
+    found = re.search(r"between generations .*: ([0-9.]+) s", text)
+    between = float(found.group(1)) if found else 0.0  # not printed before issue 30's balance
     span = ranks[0][1] + between
     fractions[0].append(ranks[0][0] / span)
     fractions[1].append((ranks[1][0] + between) / span)
