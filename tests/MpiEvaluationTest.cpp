@@ -79,10 +79,16 @@ TEST(MpiEvaluation, SameBitsAsOneProcess) {
     options.seed = 5;
     options.generation = generation;
     const std::vector<double> alone = evaluate(task, genomes, options, one);
-    const std::vector<double> spread = evaluate(task, std::span(genomes), options, pool, *ranks);
-    ASSERT_EQ(spread.size(), alone.size());
-    for (std::size_t i = 0; i < alone.size(); ++i)
-      EXPECT_EQ(spread[i], alone[i]) << "generation " << generation << ", genome " << i;
+    // The leader with a pool of 2 threads (a thread of its own runs its chunks) and of 1 (it
+    // runs its episodes between the answers to the other ranks).
+    for (ThreadPool* leader : {&pool, &one}) {
+      const std::vector<double> spread =
+          evaluate(task, std::span(genomes), options, *leader, *ranks);
+      ASSERT_EQ(spread.size(), alone.size());
+      for (std::size_t i = 0; i < alone.size(); ++i)
+        EXPECT_EQ(spread[i], alone[i]) << "generation " << generation << ", genome " << i
+                                       << ", leader threads " << leader->threadCount();
+    }
   }
   ASSERT_EQ(ranks->rankTimes().size(), static_cast<std::size_t>(ranks->size()));
   EXPECT_GT(ranks->rankTimes()[0].busySeconds + ranks->rankTimes()[0].idleSeconds, 0);
