@@ -95,38 +95,52 @@ def evaluate(comm, genomes, task, trials, threads, seed, generation):
     rank_threads = [threads] * size
     handed = [0] * size
 
-    def take(to):
+    def take(to, most):
         # Guided self-scheduling: t of the T threads get t/(4T) of what is left, in multiples of t.
         with lock:
             left = 0 if state["stop"] else total - state["next"]
             all_threads = sum(rank_threads)
             t = rank_threads[to]
             count = -(-left * t // (4 * all_threads))
-            count = min(left, -(-max(count, t) // t) * t)
+            count = min(left, most, -(-max(count, t) // t) * t)
             first = state["next"]
             state["next"] += count
             handed[to] += count
             return first, count
 
-    def local():
+    def run_local(most):
+        """Runs rank 0's next chunk of at most ``most`` episodes; False when none is left."""
         try:
-            while True:
-                first, count = take(0)
-                if count == 0:
-                    return
-                episodes[first:first + count] = runner.run(first, count)
-        except BaseException as error:  # noqa: B902  (raised again on rank 0's thread)
+            first, count = take(0, most)
+            if count == 0:
+                return False
+            episodes[first:first + count] = runner.run(first, count)
+            return True
+        except BaseException as error:  # noqa: B902  (raised again once the ranks are done)
             with lock:
                 state["stop"] = True
                 state["error"] = error
+            return False
 
-    worker = threading.Thread(target=local, daemon=True)
-    worker.start()
+    # With one thread, rank 0 runs its episodes one at a time between the answers to the other
+    # ranks (no thread of its own, no sleeps); with more, a thread of its own runs its chunks.
+    local_left = threads == 1
+    worker = None
+    if not local_left:
+        def run_all():
+            while run_local(total):
+                pass
+
+        worker = threading.Thread(target=run_all, daemon=True)
+        worker.start()
     finished = 0
     status = MPI.Status()
     pause = _SHORTEST_PAUSE
-    while finished < size - 1:
+    while finished < size - 1 or local_left:
         if not comm.Iprobe(source=MPI.ANY_SOURCE, tag=_REQUEST, status=status):
+            if local_left:
+                local_left = run_local(1)
+                continue
             time.sleep(pause)
             pause = min(pause * 2, _LONGEST_PAUSE)
             continue
@@ -141,8 +155,9 @@ def evaluate(comm, genomes, task, trials, threads, seed, generation):
         pause = _SHORTEST_PAUSE if handed[source] == 0 else _LONGEST_PAUSE
         with lock:
             rank_threads[source] = max(1, int(source_threads))
-        comm.Send(_np.array(take(source), dtype=_np.int64), dest=source, tag=_CHUNK)
-    worker.join()
+        comm.Send(_np.array(take(source, total), dtype=_np.int64), dest=source, tag=_CHUNK)
+    if worker is not None:
+        worker.join()
     if state["error"] is not None:
         raise state["error"]
     # Summed in trial order from 0, as thyrix::evaluate does, for the same bits.
