@@ -14,6 +14,7 @@ repetitions=${2:-5}
 program=$build/examples/Spherus/SpherusEvolve
 [ -x "$program" ] || { echo "no $program (build SpherusEvolve with MPI first)" >&2; exit 1; }
 command -v mpirun > /dev/null || { echo "no mpirun on PATH" >&2; exit 1; }
+[ -x /usr/bin/time ] || { echo "needs /usr/bin/time (Debian: apt-get install time)" >&2; exit 1; }
 options=(--generations "${GENERATIONS:-100}" --population "${POPULATION:-100}"
          --trials "${TRIALS:-1}" --steps "${STEPS:-1000}" --seed 3 --threads 1)
 mpirun=(mpirun)
@@ -32,6 +33,7 @@ run() {
   shift 2
   local begin end
   begin=$(now)
+  # shellcheck disable=SC2016  # expanded by each rank's shell, which knows its rank
   "${mpirun[@]}" -n "$ranks" sh -c 'exec /usr/bin/time -f "%U %S" -o "$0.cpu.$OMPI_COMM_WORLD_RANK" "$@"' \
     "$work/$name" "$program" "$@" > "$work/$name.out" 2>&1
   end=$(now)
