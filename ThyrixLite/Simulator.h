@@ -543,10 +543,12 @@ class Simulator : public World {
     return multiBodies_[body] != nullptr || !objects[body].fixed;
   }
   void updateTactileSensors();
-  // SimulatorContainment.cpp: whether the solve's velocities (bodies_) carry an end of a shape
-  // of the @p moved bodies past a border it was out of reach of at detection; the detection
-  // again, with margins that cover this step's motion.
-  [[nodiscard]] bool outranMargins(std::span<const std::uint32_t> moved) const;
+  // SimulatorContainment.cpp: whether this step's velocities carry an end of a shape past a
+  // border it was out of reach of at detection: the solve's (bodies_) for the @p moved bodies,
+  // the free ones for every other movable body (all of them unless @p solved: no row was
+  // built); the detection again, with margins that cover this step's motion.
+  [[nodiscard]] bool outranMargins(std::span<const std::uint32_t> moved, bool solved) const;
+  [[nodiscard]] bool bodyOutranMargins(std::uint32_t body, Vector2 v, real omega) const;
   [[nodiscard]] bool crossesUnseenBorder(std::uint32_t shape, Vector2 end, Vector2 displacement,
                                          real reach) const;
   void widenMargins();

@@ -20,7 +20,21 @@ real travelBound(Vector2 v, real omega, Vector2 arm, real dt) {
 
 }  // namespace
 
-bool Simulator::outranMargins(std::span<const std::uint32_t> moved) const {
+bool Simulator::outranMargins(std::span<const std::uint32_t> moved, bool solved) const {
+  for (const std::uint32_t i : moved)
+    if (bodyOutranMargins(i, bodies_[i].v, bodies_[i].omega)) return true;
+  // A body no row touched moves at its free velocity, which the last step's travel does not
+  // bound either: a push that a contact held back last step moves the body as soon as the
+  // contact is out of reach (a light body lifted off a wall, then pushed back onto it).
+  for (std::uint32_t i = 0; i < objects.size(); ++i) {
+    if (bodyStates_[i].shapeCount == 0 || (solved && touchedStamp_[i] == stamp_)) continue;
+    const PhysicalObject& object = objects[i];
+    if (!object.fixed && bodyOutranMargins(i, object.v, object.omega)) return true;
+  }
+  return false;
+}
+
+bool Simulator::bodyOutranMargins(std::uint32_t body, Vector2 v, real omega) const {
   // Detection made a contact for every end of a shape within its margin plus travel of a
   // border: an end that moves less cannot cross a border unseen (the common case, one test per
   // end). One that moves more is checked against each border.
@@ -28,26 +42,22 @@ bool Simulator::outranMargins(std::span<const std::uint32_t> moved) const {
   // Every shape's reach is at least the margin of the smallest radius: a body none of whose
   // points moves farther (judged from its box, which its centre of mass is in) needs no more.
   const real leastReach = settings_.speculativeFraction * smallestRadius_;
-  for (const std::uint32_t i : moved) {
-    const SolverBody& body = bodies_[i];
-    const PhysicalObject& object = objects[i];
-    const Vector2 size = object.boxMax - object.boxMin;
-    if ((std::abs(body.v.x) + std::abs(body.v.y) + std::abs(body.omega) * (size.x + size.y)) * dt <=
-        leastReach)
-      continue;
-    const Vector2 r = object.r;
-    const BodyState& state = bodyStates_[i];
-    for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
-      const ShapeGeometry& g = geometry_[s];
-      const real reach = g.travel + g.margin;
-      // (A circle's axis is its centre twice: one end.)
-      const int ends = shapes_[s].type == ShapeType::Circle ? 1 : 2;
-      for (int e = 0; e < ends; ++e) {
-        const Vector2 end = e == 0 ? g.p0 : g.p1;
-        if (travelBound(body.v, body.omega, end - r, dt) <= reach) continue;
-        const Vector2 displacement = (body.v + (end - r).perpendicular() * body.omega) * dt;
-        if (crossesUnseenBorder(s, end, displacement, reach)) return true;
-      }
+  const PhysicalObject& object = objects[body];
+  const Vector2 size = object.boxMax - object.boxMin;
+  if ((std::abs(v.x) + std::abs(v.y) + std::abs(omega) * (size.x + size.y)) * dt <= leastReach)
+    return false;
+  const Vector2 r = object.r;
+  const BodyState& state = bodyStates_[body];
+  for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
+    const ShapeGeometry& g = geometry_[s];
+    const real reach = g.travel + g.margin;
+    // (A circle's axis is its centre twice: one end.)
+    const int ends = shapes_[s].type == ShapeType::Circle ? 1 : 2;
+    for (int e = 0; e < ends; ++e) {
+      const Vector2 end = e == 0 ? g.p0 : g.p1;
+      if (travelBound(v, omega, end - r, dt) <= reach) continue;
+      const Vector2 displacement = (v + (end - r).perpendicular() * omega) * dt;
+      if (crossesUnseenBorder(s, end, displacement, reach)) return true;
     }
   }
   return false;

@@ -63,7 +63,7 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
   contactsSolved_ = true;
   if (contacts.empty() && internal_.empty()) {
     updateTactileSensors();
-    return false;
+    return mayRedetect && outranMargins({}, false);
   }
 
   // A row's lever arms and target, one formula for the judgment below and the rows. A circle
@@ -126,7 +126,7 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
   }
   if (forceFree) {  // no force: contacts and object contact lists already say 0
     updateTactileSensors();
-    return false;
+    return mayRedetect && outranMargins({}, false);
   }
   const std::uint32_t* const active = activeRows_.data();
 
@@ -283,7 +283,7 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
     storeForces();
     return false;
   }
-  if (mayRedetect && outranMargins({touched, movedCount})) {
+  if (mayRedetect && outranMargins({touched, movedCount}, true)) {
     // Detected again: the objects keep their free velocities, the contacts these forces (the
     // next solve's warm start).
     storeForces();
