@@ -545,9 +545,9 @@ class Simulator : public World {
   void updateTactileSensors();
   // SimulatorContainment.cpp: whether this step's velocities carry an end of a shape past a
   // border it was out of reach of at detection: the solve's (bodies_) for the @p moved bodies,
-  // the free ones for every other movable body (all of them unless @p solved: no row was
-  // built); the detection again, with margins that cover this step's motion.
-  [[nodiscard]] bool outranMargins(std::span<const std::uint32_t> moved, bool solved) const;
+  // the free ones for every other movable body (those the last solve did not touch: its stamp
+  // is not theirs); the detection again, with margins that cover this step's motion.
+  [[nodiscard]] bool outranMargins(std::span<const std::uint32_t> moved) const;
   [[nodiscard]] bool bodyOutranMargins(std::uint32_t body, Vector2 v, real omega) const;
   [[nodiscard]] bool crossesUnseenBorder(std::uint32_t shape, Vector2 end, Vector2 displacement,
                                          real reach) const;

@@ -20,14 +20,14 @@ real travelBound(Vector2 v, real omega, Vector2 arm, real dt) {
 
 }  // namespace
 
-bool Simulator::outranMargins(std::span<const std::uint32_t> moved, bool solved) const {
+bool Simulator::outranMargins(std::span<const std::uint32_t> moved) const {
   for (const std::uint32_t i : moved)
     if (bodyOutranMargins(i, bodies_[i].v, bodies_[i].omega)) return true;
   // A body no row touched moves at its free velocity, which the last step's travel does not
   // bound either: a push that a contact held back last step moves the body as soon as the
   // contact is out of reach (a light body lifted off a wall, then pushed back onto it).
   for (std::uint32_t i = 0; i < objects.size(); ++i) {
-    if (bodyStates_[i].shapeCount == 0 || (solved && touchedStamp_[i] == stamp_)) continue;
+    if (bodyStates_[i].shapeCount == 0 || touchedStamp_[i] == stamp_) continue;
     const PhysicalObject& object = objects[i];
     if (!object.fixed && bodyOutranMargins(i, object.v, object.omega)) return true;
   }

@@ -63,7 +63,8 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
   contactsSolved_ = true;
   if (contacts.empty() && internal_.empty()) {
     updateTactileSensors();
-    return mayRedetect && outranMargins({}, false);
+    ++stamp_;  // no body touched: every one moves at its free velocity (outranMargins())
+    return mayRedetect && outranMargins({});
   }
 
   // A row's lever arms and target, one formula for the judgment below and the rows. A circle
@@ -126,7 +127,8 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
   }
   if (forceFree) {  // no force: contacts and object contact lists already say 0
     updateTactileSensors();
-    return mayRedetect && outranMargins({}, false);
+    ++stamp_;  // (as above)
+    return mayRedetect && outranMargins({});
   }
   const std::uint32_t* const active = activeRows_.data();
 
@@ -283,7 +285,7 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
     storeForces();
     return false;
   }
-  if (mayRedetect && outranMargins({touched, movedCount}, true)) {
+  if (mayRedetect && outranMargins({touched, movedCount})) {
     // Detected again: the objects keep their free velocities, the contacts these forces (the
     // next solve's warm start).
     storeForces();
