@@ -286,7 +286,7 @@ TEST(ContainmentFuzzedWorld, ALightCircleLiftedOffTheFloorAndPushedBackStaysInsi
        -0x1.6fb57e634e556p+0, 0x1.0b81948d2de92p+0, 0x1.0aa6796293e8bp+2},
   };
   const test::FuzzedLeak leak = test::runFuzzedWorld(world, world.steps);
-  EXPECT_EQ(leak.step, -1) << "object " << leak.object << " " << leak.depth << " behind a wall";
+  EXPECT_EQ(leak.step, -1) << "object " << leak.object << ", " << leak.depth << " behind a wall";
 }
 
 INSTANTIATE_TEST_SUITE_P(BothSolvers, ContainmentTest,
