@@ -212,13 +212,18 @@ class PhysicalObject : public GraphicalObject {
   /// the field. Simulator::advanceTime() runs it inline for the core shapes while a field is
   /// set, and the default hook otherwise, so a world without gravity computes exactly what it
   /// did before the field existed (`F / m + 0` would turn a velocity -0 into +0).
-  void computeDerivativesInField(Vector2 gravity) { velocitiesFromAccumulators<true>(gravity); }
+  /// False for a pushed body (see velocitiesFromAccumulators()).
+  bool computeDerivativesInField(Vector2 gravity) {
+    return velocitiesFromAccumulators<true>(gravity);
+  }
 
   /// The default hook's body, without (@p InField false: @p gravity is not read) or with the
   /// gravity field @p gravity added to a movable body's velocity. One body for both, the field's
   /// addition compiled out of the default hook: the same instructions and bits as before.
+  /// False when the body was pushed (or has no positive mass or inertia): its velocity is then
+  /// its own, not the field's.
   template <bool InField>
-  void velocitiesFromAccumulators([[maybe_unused]] Vector2 gravity) {
+  bool velocitiesFromAccumulators([[maybe_unused]] Vector2 gravity) {
     if (unpushed() && m > 0 && I > 0) [[likely]] {
       // Unpushed (most bodies at rest): +0 divided by a positive mass is +0, so the three
       // divisions are skipped with the same result, bit for bit, fixed or not; and the
@@ -231,9 +236,10 @@ class PhysicalObject : public GraphicalObject {
       else
         v = {};
       omega = 0;
-      return;
+      return true;
     }
     velocitiesFromPushes<InField>(gravity);
+    return false;
   }
   /// velocitiesFromAccumulators() for a pushed body, out of line: the simulator's loop over the
   /// bodies, mostly unpushed, then keeps to the few instructions of the test (inline, the
@@ -264,6 +270,7 @@ class PhysicalObject : public GraphicalObject {
   // Who owns this object besides the unique_ptr it came in, so that a second owner is refused.
   const World* world_ = nullptr;             // the world it is registered with
   const PhysicalObject* carrier_ = nullptr;  // the object whose sub-body it is, until registered
+  std::uint32_t index_ = 0;                  // in its world's objects, once registered
 };
 
 }  // namespace thyrix

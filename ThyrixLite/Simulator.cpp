@@ -75,6 +75,7 @@ void Simulator::prepareRegistration(std::span<PhysicalObject* const> added) {
   reserveFor(movable_, objects.size() + added.size());
   reserveFor(touched_, objects.size() + added.size());
   reserveFor(touchedStamp_, objects.size() + added.size());
+  reserveFor(freeRunners_, objects.size() + added.size());
   reserveFor(multiBodies_, objects.size() + added.size());
   reserveFor(objectContactCursor_, objects.size() + added.size());
   // Rest skipping's memory of the shapes and bodies.
@@ -114,6 +115,7 @@ void Simulator::completeRegistration(PhysicalObject& object, std::size_t index) 
   state.custom = !hasDefaultHooks(object);
   state.alwaysAwake = state.custom || index != registrationFirst_;
   bodyStates_.push_back(state);  // unknown: its first detection computes everything
+  object.index_ = static_cast<std::uint32_t>(index);
   for (Primitive* primitive : object.primitives()) {
     const auto shape = static_cast<std::uint32_t>(shapes_.size());
     shapes_.push_back(
@@ -310,10 +312,14 @@ void Simulator::computeDerivativesInGravity() {
   const Vector2 gravity = gravity_;
   forEachInRuns(
       objects, customObjects_,
-      [gravity](PhysicalObject& object) { object.computeDerivativesInField(gravity); },
-      [gravity](PhysicalObject& object) {
+      [this, gravity](PhysicalObject& object) {
+        if (!object.computeDerivativesInField(gravity)) [[unlikely]]
+          noteFreeMotion(object);
+      },
+      [this, gravity](PhysicalObject& object) {
         object.applyWeight(gravity);
         object.computeDerivativesWithoutContacts();
+        if (!object.primitives().empty()) noteFreeMotion(object);
       });
 }
 

@@ -133,14 +133,23 @@ class Simulator : public World {
     // existed: one test per step, then the same loop (out of line, it cost the arena
     // benchmark 12 instructions a step). The core shapes' hooks are called without a virtual
     // call, in runs between the other objects (no flag to test per object).
+    // (The bodies that move otherwise than the field are noted on their rare path, for
+    // outranMargins().)
+    freeRunners_.clear();
     if (hasGravity_) {
       computeDerivativesInGravity();
       return;
     }
     forEachInRuns(
         objects, customObjects_,
-        [](PhysicalObject& object) { object.PhysicalObject::computeDerivativesWithoutContacts(); },
-        [](PhysicalObject& object) { object.computeDerivativesWithoutContacts(); });
+        [this](PhysicalObject& object) {
+          if (!object.velocitiesFromAccumulators<false>({})) [[unlikely]]
+            noteFreeMotion(object);
+        },
+        [this](PhysicalObject& object) {
+          object.computeDerivativesWithoutContacts();
+          if (!object.primitives().empty()) noteFreeMotion(object);  // (an elastoid has none)
+        });
   }
   /// Phase 6: contact forces (the chosen solver, island by island), then final velocities;
   /// the tactile sensors then read the forces. In a world without articulated agents, where the
@@ -548,7 +557,16 @@ class Simulator : public World {
   // the free ones for every other movable body (those the last solve did not touch: its stamp
   // is not theirs); the detection again, with margins that cover this step's motion.
   [[nodiscard]] bool outranMargins(std::span<const std::uint32_t> moved) const;
-  [[nodiscard]] bool bodyOutranMargins(std::uint32_t body, Vector2 v, real omega) const;
+  // outranMargins() of a solve that built no row: no call when no body moves otherwise than
+  // the field and there is none.
+  [[nodiscard]] bool freeMotionOutranMargins() const {
+    return (!freeRunners_.empty() || hasGravity_) && outranMargins({});
+  }
+  // Lists @p object in freeRunners_ if its free velocity (pushed, or its own hook's) may move
+  // a point of it farther than the least margin in the step.
+  void noteFreeMotion(const PhysicalObject& object);
+  // Whether an end of a shape of @p body, moving at @p v, @p omega, crosses such a border.
+  [[nodiscard]] bool endsOutranMargins(std::uint32_t body, Vector2 v, real omega) const;
   [[nodiscard]] bool crossesUnseenBorder(std::uint32_t shape, Vector2 end, Vector2 displacement,
                                          real reach) const;
   void widenMargins();
@@ -745,6 +763,9 @@ class Simulator : public World {
   bool widening_ = false;  // this detection recomputes every shape, with widenMargins()' margins
   bool marginsWidened_ = false;  // the margins are widenMargins()': the next detection resets them
   real smallestRadius_ = realMax;  // of the shapes other than borders registered so far
+  // This step's bodies whose free velocity is not the field's and may move a point farther
+  // than the least margin (noteFreeMotion()).
+  std::vector<std::uint32_t> freeRunners_;
   // The most substeps a step is divided into (stepInParts()).
   static constexpr std::uint32_t maxSubsteps = 64;
   bool mayDivide_ = false;   // the solve may ask for the step to be divided (advanceTime())

@@ -18,35 +18,58 @@ real travelBound(Vector2 v, real omega, Vector2 arm, real dt) {
   return (std::abs(velocity.x) + std::abs(velocity.y)) * dt;
 }
 
+// How far a point of @p object (its box holds them and its centre of mass) moves in @p dt at
+// @p v, @p omega, bounded from above.
+real freeTravel(const PhysicalObject& object, Vector2 v, real omega, real dt) {
+  const Vector2 size = object.boxMax - object.boxMin;
+  return (std::abs(v.x) + std::abs(v.y) + std::abs(omega) * (size.x + size.y)) * dt;
+}
+
 }  // namespace
 
 bool Simulator::outranMargins(std::span<const std::uint32_t> moved) const {
-  for (const std::uint32_t i : moved)
-    if (bodyOutranMargins(i, bodies_[i].v, bodies_[i].omega)) return true;
-  // A body no row touched moves at its free velocity, which the last step's travel does not
-  // bound either: a push that a contact held back last step moves the body as soon as the
-  // contact is out of reach (a light body lifted off a wall, then pushed back onto it).
-  for (std::uint32_t i = 0; i < objects.size(); ++i) {
-    if (bodyStates_[i].shapeCount == 0 || touchedStamp_[i] == stamp_) continue;
-    const PhysicalObject& object = objects[i];
-    if (!object.fixed && bodyOutranMargins(i, object.v, object.omega)) return true;
-  }
-  return false;
-}
-
-bool Simulator::bodyOutranMargins(std::uint32_t body, Vector2 v, real omega) const {
-  // Detection made a contact for every end of a shape within its margin plus travel of a
-  // border: an end that moves less cannot cross a border unseen (the common case, one test per
-  // end). One that moves more is checked against each border.
   const real dt = solveStep();
   // Every shape's reach is at least the margin of the smallest radius: a body none of whose
   // points moves farther (judged from its box, which its centre of mass is in) needs no more.
   const real leastReach = settings_.speculativeFraction * smallestRadius_;
-  const PhysicalObject& object = objects[body];
-  const Vector2 size = object.boxMax - object.boxMin;
-  if ((std::abs(v.x) + std::abs(v.y) + std::abs(omega) * (size.x + size.y)) * dt <= leastReach)
-    return false;
-  const Vector2 r = object.r;
+  for (const std::uint32_t i : moved) {
+    const SolverBody& body = bodies_[i];
+    if (freeTravel(objects[i], body.v, body.omega, dt) > leastReach &&
+        endsOutranMargins(i, body.v, body.omega))
+      return true;
+  }
+  // A body no row touched moves at its free velocity, which the last step's travel does not
+  // bound either: a push that a contact held back last step moves the body as soon as the
+  // contact is out of reach (a light body lifted off a wall, then pushed back onto it).
+  const auto freeOutran = [&](std::uint32_t i) {
+    const PhysicalObject& object = objects[i];
+    return touchedStamp_[i] != stamp_ && !object.fixed &&
+           endsOutranMargins(i, object.v, object.omega);
+  };
+  for (const std::uint32_t i : freeRunners_)
+    if (freeOutran(i)) return true;
+  // The others move at the field (or not at all): all are checked only if it outruns the least
+  // reach in the step.
+  if ((std::abs(gravity_.x) + std::abs(gravity_.y)) * dt > leastReach) {
+    for (std::uint32_t i = 0; i < objects.size(); ++i)
+      if (bodyStates_[i].shapeCount != 0 && freeOutran(i)) return true;
+  }
+  return false;
+}
+
+void Simulator::noteFreeMotion(const PhysicalObject& object) {
+  // (The whole step's length: a substep is no longer.)
+  if (freeTravel(object, object.v, object.omega, timestep()) >
+      settings_.speculativeFraction * smallestRadius_)
+    freeRunners_.push_back(object.index_);
+}
+
+bool Simulator::endsOutranMargins(std::uint32_t body, Vector2 v, real omega) const {
+  // Detection made a contact for every end of a shape within its margin plus travel of a
+  // border: an end that moves less cannot cross a border unseen (the common case, one test per
+  // end). One that moves more is checked against each border.
+  const real dt = solveStep();
+  const Vector2 r = objects[body].r;
   const BodyState& state = bodyStates_[body];
   for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {
     const ShapeGeometry& g = geometry_[s];

@@ -64,7 +64,7 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
   if (contacts.empty() && internal_.empty()) {
     updateTactileSensors();
     ++stamp_;  // no body touched: every one moves at its free velocity (outranMargins())
-    return mayRedetect && outranMargins({});
+    return mayRedetect && freeMotionOutranMargins();
   }
 
   // A row's lever arms and target, one formula for the judgment below and the rows. A circle
@@ -128,7 +128,7 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
   if (forceFree) {  // no force: contacts and object contact lists already say 0
     updateTactileSensors();
     ++stamp_;  // (as above)
-    return mayRedetect && outranMargins({});
+    return mayRedetect && freeMotionOutranMargins();
   }
   const std::uint32_t* const active = activeRows_.data();
 
