@@ -289,6 +289,77 @@ TEST(ContainmentFuzzedWorld, ALightCircleLiftedOffTheFloorAndPushedBackStaysInsi
   EXPECT_EQ(leak.step, -1) << "object " << leak.object << ", " << leak.depth << " behind a wall";
 }
 
+// A second world the whole-world fuzzer found leaking, after the fix above (the input
+// fuzz/corpus/WorldFuzzer/leak-14386931253813765302: 16 bodies of masses 0.01 to 70,
+// Gauss-Seidel). A light capsule with a circle at its end (m 0.34, R 0.2) squeezed against the
+// floor by a body 116 times heavier, 2 deep into it: the step was divided into 56 substeps,
+// and each substep took the whole overlap back in its own length, 56 times faster than the step
+// would, throwing the light body 14 m along the floor in the last substeps, which the cap of 64
+// substeps could not divide further: an end of its capsule 0.043 below the floor line (step 169,
+// object 14). A substep now takes an overlap back over what is left of the step.
+TEST(ContainmentFuzzedWorld, ALightBodySqueezedDeepIntoAHeavyOneInADividedStepStaysInside) {
+  test::FuzzedWorld world;
+  world.timestep = 0x1.ac0083126e97ap-7;
+  world.solver = ContactSolverKind::GaussSeidel;
+  world.halfWidth = 0x1.3ffffee7cp+4;
+  world.halfHeight = 0x1.3fffffffc37p+4;
+  world.gravity = -0x1.d1a40f357045ep+3;
+  world.steps = 188;
+  // kind, mass, radius, halfLength, x, y, alpha, forceX, forceY, torque, frequency, phase
+  world.bodies = {
+      {0, 0x1.53af12a0c3804p-7, 0x1.3c37e6866536bp+1, 0x1.21b3e02dce2e3p+2, 0x1.6b35ac465fc7fp+3,
+       0x1.bf6e9a068102fp+2, 0x1.09dfec29af622p+0, 0x1.628284f1fbdc4p-3, -0x1.b0ad8746f7b63p-4,
+       0x1.2e0661d3402ffp-7, 0x1.9c0ca3ea197e3p+0, 0x1.440d22857f865p+2},
+      {0, 0x1.9fa2853a42897p-2, 0x1.b5c89eb26dffcp+0, 0x1.8e5c1b1bb0eccp+1, -0x1.d7e7c53c25c7cp+3,
+       0x1.972f661123b49p+3, 0x1.16ea28ad83d5ap+2, 0x1.2fe16c5fdc80fp-1, 0x1.5ab3337544f76p+3,
+       0x1.a9abb0a5425fp+2, 0x1.f75934c155454p+2, 0x1.dca7224e5a04fp+0},
+      {1, 0x1.128405bc9c75ap-1, 0x1.d68572b2d79b4p-1, 0x1.6d0052a6d1b3cp+0, -0x1.72fdf682e0846p+2,
+       0x1.e83377f0a7c9fp+2, 0x1.87e2e77ae4e56p+2, 0x1.c29700807798bp+3, 0x1.6e7f82619db47p+4,
+       -0x1.217c928aaa543p+4, 0x1.1fd50ad2f08eap+2, 0x1.119ba8740a13ap+1},
+      {0, 0x1.0cf26ccf95e79p+6, 0x1.3fcdaa6438f5ap+1, 0x1.9b449298e7122p+0, -0x1.8e6597be95998p+0,
+       -0x1.80cff7914e36dp+2, 0x1.504c6dc6b002ap+1, 0x1.372ae977439e4p+12, 0x1.60d49ebe03c35p+13,
+       0x1.ce3ed8050ec7ap+13, 0x1.b21194c4e6d35p+2, 0x1.cf88f573a74ddp-1},
+      {1, 0x1.2bb03ca99b1aap-3, 0x1.625c13202e873p-1, 0x1.11a67ff50d253p-1, -0x1.c1eb8451e4e5cp+3,
+       -0x1.a9812a9493b17p+1, 0x1.cf4c070d24c2p+1, -0x1.091e9b2bfbe25p+2, -0x1.02614c831d32ap-2,
+       0x1.24e99a1c65c0fp-6, 0x1.5a28a0d1970d1p+0, 0x1.c4919d6408ebap-2},
+      {2, 0x1.16ae6a3969156p+2, 0x1.e148fa991c551p-2, 0x1.20ede93a286b3p+0, -0x1.0520e253e5ff5p+3,
+       -0x1.5e36d13b9dafap+3, 0x1.2e9b88d2f5751p+1, -0x1.87293384e1987p-1, -0x1.3db89a58b60fbp+0,
+       0x1.ac2c68bab39dcp-3, 0x1.e15b52f250f04p+2, 0x1.024cf43dcd33ap+0},
+      {1, 0x1.5f251e5e8de7cp-3, 0x1.2dfc48a1a6b37p+0, 0x1.77c49e5d9dc36p+1, 0x1.10a5a1c1d9c3fp+3,
+       -0x1.3f39343db6839p+3, 0x1.15f194dde675ap+1, 0x1.4170bcc1d2bc3p+2, -0x1.ba5d1a7e3fbd5p-1,
+       -0x1.f094fa2013ef8p+3, 0x1.061305c12dfep+3, 0x1.d05b3816aaa15p+0},
+      {2, 0x1.2c9afc953bc4cp-2, 0x1.ac6141c3c2d1bp-2, 0x1.9f7b9b1e26cacp+0, 0x1.c628baba2eecep+0,
+       0x1.020710c76362p+2, 0x1.94a6134a383e8p+1, -0x1.2c8b9244ce8c1p-4, 0x1.082e86551df8cp-1,
+       0x1.980fcb654a5d2p-3, 0x1.3c674fae78deep+3, 0x1.b3e6b4659ad9fp-3},
+      {2, 0x1.e9176c7bf37b4p-5, 0x1.9dccf46c3c90ep-2, 0x1.e60aa7692c8cfp+1, -0x1.49f2d7a4e2f32p+3,
+       -0x1.3421c672b2596p+1, 0x1.519453daaf2ddp+1, -0x1.2b251f619fac7p-5, -0x1.76d94a288ff0fp-2,
+       0x1.163ef9307bf43p-4, 0x1.32a673612831p+2, 0x1.7c824f81b5029p+1},
+      {0, 0x1.1cdce4bc9b47ap-5, 0x1.69a986a2f72b1p+0, 0x1.1727decf4f016p+2, 0x1.342bead2082c5p+2,
+       0x1.13186bd5cc8c9p+4, 0x1.c7b3fad56f134p+1, -0x1.93cf4a73f75ecp+0, 0x1.4e2a109e76505p+0,
+       -0x1.8ec11cf95dd69p+0, 0x1.01dc194a09142p+3, 0x1.748e079cc9a06p+2},
+      {2, 0x1.5ecb5df9367d3p-2, 0x1.9b70466ff3951p-3, 0x1.d9a3022247237p-1, 0x1.014dab4ed46d8p+4,
+       0x1.508fc3099bdc7p+3, 0x1.6b0cb451356fcp+2, -0x1.22da88434571fp+0, -0x1.374da8df4ae72p+0,
+       -0x1.296c17b4e5c8dp-4, 0x1.5ecdfe60660aap+2, 0x1.55327de92b45dp-2},
+      {2, 0x1.53f4ad9d948fcp-7, 0x1.87ce2ccde38e4p-1, 0x1.525726fa6ab37p+1, -0x1.dcb1c233ffbb1p+1,
+       -0x1.dd825fd0e06f8p-3, 0x1.8827a77fa2081p+2, 0x1.eff378fca57dbp-4, 0x1.030e4850f7af4p-3,
+       -0x1.a5d542a4dc092p-6, 0x1.345f52117c608p-3, 0x1.87a5083039891p+2},
+      {0, 0x1.506ed87793906p-6, 0x1.490eac339a553p+0, 0x1.4d575298de3dbp+1, 0x1.fc14400077f37p+3,
+       0x1.58b4c5d221404p+0, 0x1.5603ce72cf0a7p+0, -0x1.ca985452aa71dp-1, 0x1.96e663fcec6e9p-1,
+       -0x1.6a095af6c40c4p-2, 0x1.11fa5cccfc3e7p+1, 0x1.93aaf309d4359p+1},
+      {2, 0x1.172346b899ab6p+6, 0x1.5beb9897e10b7p-1, 0x1.0c135f8ef82bep+2, -0x1.c005f8d8f5f8dp+2,
+       -0x1.9ffca89762893p+2, 0x1.a9a0f1d6bdbbcp-4, 0x1.05aa0f0342461p+10, 0x1.0ec7e99f580dbp+10,
+       -0x1.30414d0b30c6p+9, 0x1.c88ef0b7dcf31p+1, 0x1.4fd24d1fa4107p-1},
+      {0, 0x1.3f837b365aad4p-6, 0x1.4c9be5b9c0685p+0, 0x1.f184efc1f2655p+1, 0x1.11cf32bc445ep+4,
+       -0x1.b76499faa8d85p+2, 0x1.1ea5d5239fb21p+1, 0x1.65a466711220dp-3, 0x1.76ae8407d30e9p-4,
+       -0x1.024336d1d3f2p-5, 0x1.77e65e26132cp-5, 0x1.560e8d150fc76p+2},
+      {2, 0x1.3f0202ebe966fp+5, 0x1.89385d95a5152p+0, 0x1.2c1fb4cea05f1p+2, 0x1.69873ad588f96p+1,
+       0x1.fb9779fd15557p-3, 0x1.ced358fba303ap+1, -0x1.3c7bfe66f3abep+11, -0x1.bc2e756537a2dp+9,
+       0x1.f174d304a3b81p+8, 0x1.d2cd5675bb6b8p+2, 0x1.b910f0303a0d4p+0},
+  };
+  const test::FuzzedLeak leak = test::runFuzzedWorld(world, world.steps);
+  EXPECT_EQ(leak.step, -1) << "object " << leak.object << ", " << leak.depth << " behind a wall";
+}
+
 INSTANTIATE_TEST_SUITE_P(BothSolvers, ContainmentTest,
                          ::testing::Values(ContactSolverKind::Baraff,
                                            ContactSolverKind::GaussSeidel),
