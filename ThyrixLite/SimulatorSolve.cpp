@@ -86,9 +86,9 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
   };
   const real depthFactor[2] = {1, settings_.penetrationCorrection};  // gap, overlap
   // A substep may close a gap, but takes back an overlap over what is left of the step, as the
-  // whole step would: each substep that took all of it back would push bodies apart the more
-  // violently the more the step is divided (a deep overlap then threw a light body through a
-  // wall).
+  // whole step would: substeps that each took all of it back would push bodies apart the faster
+  // the more the step is divided, and throw a light body squeezed deep into a heavy one through
+  // a wall.
   const real depthTime[2] = {dt, substep_ > 0 ? stepLeft_ : dt};
   const auto target = [&depthFactor, &depthTime](const GlobalContactInfo& c) {
     const int overlap = c.depth > 0 ? 1 : 0;

@@ -76,8 +76,9 @@ TEST_P(ContainmentTest, LightLeverPushedNearItsPivotStaysAboveTheFloor) {
 // contact reaches the floor at detection and no row touches the circle, whether the world has
 // no contact at all, only contacts that hold by themselves (the step needs no force) or a
 // contact elsewhere that needs a force: its free motion alone must be checked against the
-// walls. Before the fix its centre ended half a radius below the floor line in all three; the
-// floor must stop it exactly on the floor (the gap closed, F = m v: it moved down by the gap).
+// walls. Checking only the bodies the solve moved, its centre ends half a radius below the
+// floor line in all three; the floor must stop it exactly on the floor (the gap closed, F = m v:
+// it moved down by the gap).
 TEST_P(ContainmentTest, AFreeBodyPushedPastAWallOutOfItsReachStopsOnTheWall) {
   enum class Company { none, restingAtAMargin, pressed };
   for (const Company company : {Company::none, Company::restingAtAMargin, Company::pressed}) {
@@ -157,10 +158,10 @@ TEST_P(ContainmentTest, WorldsWhoseLightBodiesTurnByRadiansStayInTheirBox) {
   }
 }
 
-// The one world of 79,661 that fuzz/WorldFuzzer.cpp still found leaking after the split steps
-// (the input fuzz/corpus/WorldFuzzer/leak-7639936762890496615, decoded by the fuzzer: 37
-// bodies of masses 0.01 to 64 in a box 37 wide, Baraff). A light circle (m 0.021, R 0.21)
-// held on the floor against its push was lifted off it by a divided step, by more than its
+// A world of fuzz/WorldFuzzer.cpp that leaked with divided steps and only the moved bodies
+// checked, one of 79,661 (the input fuzz/corpus/WorldFuzzer/leak-7639936762890496615, decoded by
+// the fuzzer: 37 bodies of masses 0.01 to 64 in a box 37 wide, Baraff). A light circle (m 0.021, R
+// 0.21) held on the floor against its push was lifted off it by a divided step, by more than its
 // margin, and in the next step its push alone, with no contact on it, carried its centre 0.047
 // below the floor line (step 160, object 21). Every shape's axis must stay inside, every step.
 TEST(ContainmentFuzzedWorld, ALightCircleLiftedOffTheFloorAndPushedBackStaysInside) {
@@ -289,14 +290,14 @@ TEST(ContainmentFuzzedWorld, ALightCircleLiftedOffTheFloorAndPushedBackStaysInsi
   EXPECT_EQ(leak.step, -1) << "object " << leak.object << ", " << leak.depth << " behind a wall";
 }
 
-// A second world the whole-world fuzzer found leaking, after the fix above (the input
+// A world of the whole-world fuzzer that leaked with every body checked, one of 84,433 (the input
 // fuzz/corpus/WorldFuzzer/leak-14386931253813765302: 16 bodies of masses 0.01 to 70,
 // Gauss-Seidel). A light capsule with a circle at its end (m 0.34, R 0.2) squeezed against the
 // floor by a body 116 times heavier, 2 deep into it: the step was divided into 56 substeps,
-// and each substep took the whole overlap back in its own length, 56 times faster than the step
-// would, throwing the light body 14 m along the floor in the last substeps, which the cap of 64
+// and a substep that took the whole overlap back in its own length, 56 times faster than the
+// step would, threw the light body 14 m along the floor in the last substeps, which the cap of 64
 // substeps could not divide further: an end of its capsule 0.043 below the floor line (step 169,
-// object 14). A substep now takes an overlap back over what is left of the step.
+// object 14). A substep must take an overlap back over what is left of the step.
 TEST(ContainmentFuzzedWorld, ALightBodySqueezedDeepIntoAHeavyOneInADividedStepStaysInside) {
   test::FuzzedWorld world;
   world.timestep = 0x1.ac0083126e97ap-7;
