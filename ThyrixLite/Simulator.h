@@ -771,7 +771,6 @@ class Simulator : public World {
   bool mayDivide_ = false;   // the solve may ask for the step to be divided (advanceTime())
   std::uint32_t parts_ = 1;  // the substeps the last solve asked for (1: none)
   real substep_ = 0;         // the substep being run, 0 outside stepInParts()
-  real stepLeft_ = 0;        // the time left in the divided step, this substep's included
   struct StepStart {         // an object's pose and free velocities at the start of a divided step
     Vector2 r;
     real alpha = 0;

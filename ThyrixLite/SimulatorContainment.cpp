@@ -220,7 +220,6 @@ void Simulator::stepInParts() {
   real time = timestep();
   while (left > 0) {
     substep_ = time / static_cast<real>(left);
-    stepLeft_ = time;
     for (std::uint32_t i = 0; i < objects.size(); ++i) {
       objects[i].v = stepStarts_[i].v;
       objects[i].omega = stepStarts_[i].omega;
@@ -255,7 +254,6 @@ void Simulator::stepInParts() {
   }
   parts_ = 1;
   substep_ = 0;
-  stepLeft_ = 0;
   statistics_.substeps = total;
   indexContacts();
 }

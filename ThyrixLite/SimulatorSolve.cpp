@@ -85,14 +85,8 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
                : cross(c.point - c.objectB->r, c.normal);
   };
   const real depthFactor[2] = {1, settings_.penetrationCorrection};  // gap, overlap
-  // A substep may close a gap, but takes back an overlap over what is left of the step, as the
-  // whole step would: substeps that each took all of it back would push bodies apart the faster
-  // the more the step is divided, and throw a light body squeezed deep into a heavy one through
-  // a wall.
-  const real depthTime[2] = {dt, substep_ > 0 ? stepLeft_ : dt};
-  const auto target = [&depthFactor, &depthTime](const GlobalContactInfo& c) {
-    const int overlap = c.depth > 0 ? 1 : 0;
-    return depthFactor[overlap] * c.depth / depthTime[overlap];
+  const auto target = [&depthFactor, dt](const GlobalContactInfo& c) {
+    return depthFactor[c.depth > 0 ? 1 : 0] * c.depth / dt;
   };
 
   // In a sparse world most steps need no force at all: every contact (mostly speculative)

@@ -8,7 +8,7 @@
 /// bounded force and torque, and gravity or none.
 ///
 /// THYRIX_FUZZ_LEAK_FOLDER (a folder): a shape found outside the box saves the input there
-/// instead of failing, and the other checks go on (a long run that counts the leaks).
+/// instead of failing, and the other checks go on (long runs while leaks are known).
 #include <ThyrixLite/Border.h>
 #include <ThyrixLite/CappedRectangle.h>
 #include <ThyrixLite/Circle.h>

@@ -89,7 +89,7 @@ inline FuzzedLeak runFuzzedWorld(const FuzzedWorld& world, int steps) {
   constexpr int ramp = 20;  // the fuzzer's: forces and gravity grow over the first steps
   FuzzedLeak leak;
   for (int step = 0; step < std::min(steps, world.steps); ++step) {
-    const real t = simulator.time();
+    const auto t = static_cast<real>(simulator.time());
     const real grow = real(std::min(step, ramp)) / real(ramp);
     simulator.setGravity(gravity * grow);
     for (std::size_t i = 0; i < objects.size(); ++i) {
