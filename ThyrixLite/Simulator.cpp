@@ -241,14 +241,18 @@ void Simulator::advanceTime() {
 void Simulator::computeAwakeDerivatives() {
   // In registration order, as the full loop: an Elastoid pushes its bodies before they
   // compute their velocities. The bodies the loop leaves out are unpushed with v and omega
-  // +0, the very values their hook would write.
+  // +0, the very values their hook would write. (The bodies that move otherwise than the field
+  // are noted, as in computeDerivativesWithoutContacts().)
+  freeRunners_.clear();
   for (std::size_t k = 0; k < awakeCount_; ++k) {
     const std::uint32_t i = awake_[k];
     PhysicalObject& object = objects[i];
-    if (bodyStates_[i].custom)
+    if (bodyStates_[i].custom) {
       object.computeDerivativesWithoutContacts();
-    else
-      object.PhysicalObject::computeDerivativesWithoutContacts();
+      if (!object.primitives().empty()) noteFreeMotion(object);
+    } else if (!object.velocitiesFromAccumulators<false>({})) {
+      noteFreeMotion(object);
+    }
   }
 }
 
