@@ -1,7 +1,7 @@
 /// @file BroadPhase.cpp
 /// @brief BroadPhase above smallCount boxes: the sweep or the grid (dense or hashed).
 #include <ThyrixLite/BroadPhase.h>
-#include <ThyrixLite/Wide.h>
+#include <Tools/Wide.h>
 #include <Tools/Inlining.h>
 
 #include <algorithm>

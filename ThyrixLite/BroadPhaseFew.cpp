@@ -2,8 +2,8 @@
 /// @brief BroadPhase's incremental paths: up to smallCount boxes, every pair as one bit mask per
 /// box; above, when few boxes moved, the moved boxes against every box.
 #include <ThyrixLite/BroadPhase.h>
-#include <ThyrixLite/Wide.h>
 #include <Tools/Inlining.h>
+#include <Tools/Wide.h>
 
 #include <algorithm>
 #include <bit>
@@ -76,9 +76,9 @@ class ManyMovedRows {
 /// of boxes at a time (the padding of @p soa, 7 past count, makes the last register whole; its
 /// bits are garbage, masked by the caller). A word of 64 boxes at a time: one, for few boxes,
 /// so that the compiler keeps no loop over words.
-template <class Rows>
-void overlapRows(const BoundingBox* boxes, Rows rows, const BoxColumns& soa, std::uint32_t count) {
-  using W = simd::Native<real>;
+template <class W, class Rows>
+void overlapRowsOf(const BoundingBox* boxes, Rows rows, const BoxColumns& soa,
+                   std::uint32_t count) {
   std::uint32_t m = 0;
   std::uint64_t* row = nullptr;
   while (rows.next(m, row)) {
@@ -101,6 +101,24 @@ void overlapRows(const BoundingBox* boxes, Rows rows, const BoxColumns& soa, std
       if constexpr (Rows::oneWord) break;
     }
   }
+}
+
+#if defined(THYRIX_SIMD_AVX2_DISPATCH)
+/// overlapRowsOf() in AVX2 registers, twice SSE2's boxes per comparison.
+template <class Rows>
+THYRIX_SIMD_AVX2_KERNEL void overlapRowsAvx2(const BoundingBox* boxes, Rows rows,
+                                             const BoxColumns& soa, std::uint32_t count) {
+  overlapRowsOf<simd::Avx2<real>>(boxes, rows, soa, count);
+}
+#endif
+
+/// overlapRowsOf() in the widest registers the processor has.
+template <class Rows>
+void overlapRows(const BoundingBox* boxes, Rows rows, const BoxColumns& soa, std::uint32_t count) {
+#if defined(THYRIX_SIMD_AVX2_DISPATCH)
+  if (processorHasAvx2()) return overlapRowsAvx2(boxes, rows, soa, count);
+#endif
+  overlapRowsOf<simd::Native<real>>(boxes, rows, soa, count);
 }
 
 /// Bits above @p i.

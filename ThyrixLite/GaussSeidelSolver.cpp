@@ -1,5 +1,5 @@
 #include <ThyrixLite/GaussSeidelSolver.h>
-#include <ThyrixLite/Wide.h>
+#include <Tools/Wide.h>
 #include <Tools/Inlining.h>
 #include <Tools/ProcessorFeatures.h>
 

@@ -3,7 +3,7 @@
 /// per shape and border and retested only for the shapes that moved (the contacts themselves
 /// are made in SimulatorContacts.cpp).
 #include <ThyrixLite/Simulator.h>
-#include <ThyrixLite/Wide.h>
+#include <Tools/Wide.h>
 
 #include <algorithm>
 #include <bit>
@@ -42,10 +42,9 @@ constexpr std::size_t fusedBorders = 4;
 /// register (the last repeated to fill it), so each box is read once for all of them and its
 /// bits set without a branch; a whole word of moved shapes (a crowd in motion) is tested
 /// without the walk over its bits.
-template <std::size_t Borders>
+template <std::size_t Borders, class W = simd::Native<real>>
 void reachWord(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t retest,
                std::uint64_t* reach) {
-  using W = simd::Native<real>;
   constexpr std::size_t lanes = W::lanes;
   constexpr std::size_t groups = (Borders + lanes - 1) / lanes;
   W pointX[groups], pointY[groups], normalX[groups], normalY[groups], absX[groups], absY[groups];
@@ -94,6 +93,46 @@ void reachWord(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t 
   for (std::size_t k = 0; k < Borders; ++k) reach[k] |= found[k];
 }
 
+/// findBorderReachTogether()'s loop over the words of @p movedBits, for @p borders borders
+/// (at most fusedBorders) of @p lines, in registers of @p W.
+template <class W>
+void reachTogether(const BorderLine* lines, std::size_t borders, const std::uint64_t* movedBits,
+                   const BoundingBox* gridBoxes, std::uint64_t* borderReach, std::size_t words) {
+  for (std::size_t w = 0; w < words; ++w) {
+    const std::uint64_t retest = movedBits[w];
+    if (retest == 0) continue;
+    std::uint64_t reach[fusedBorders] = {};
+    for (std::size_t k = 0; k < borders; ++k) reach[k] = borderReach[k * words + w] & ~retest;
+    const BoundingBox* const boxes = gridBoxes + 64 * w;
+    static_assert(fusedBorders == 4, "a case per border count");
+    switch (borders) {
+      case 1:
+        reachWord<1, W>(lines, boxes, retest, reach);
+        break;
+      case 2:
+        reachWord<2, W>(lines, boxes, retest, reach);
+        break;
+      case 3:
+        reachWord<3, W>(lines, boxes, retest, reach);
+        break;
+      default:  // fusedBorders
+        reachWord<4, W>(lines, boxes, retest, reach);
+        break;
+    }
+    for (std::size_t k = 0; k < borders; ++k) borderReach[k * words + w] = reach[k];
+  }
+}
+
+#if defined(THYRIX_SIMD_AVX2_DISPATCH)
+/// reachTogether() in AVX2 registers: four borders (an arena's) in one.
+THYRIX_SIMD_AVX2_KERNEL void reachTogetherAvx2(const BorderLine* lines, std::size_t borders,
+                                               const std::uint64_t* movedBits,
+                                               const BoundingBox* gridBoxes,
+                                               std::uint64_t* borderReach, std::size_t words) {
+  reachTogether<simd::Avx2<real>>(lines, borders, movedBits, gridBoxes, borderReach, words);
+}
+#endif
+
 }  // namespace
 
 void Simulator::findBorderReach(std::size_t k, std::size_t words, bool borderMoved) {
@@ -124,29 +163,15 @@ bool Simulator::findBorderReachTogether(std::size_t words) {
     const std::uint32_t border = borderShapes_[k];
     lines[k] = borderLine(geometry_[border].p0, geometry_[border].p1);
   }
-  for (std::size_t w = 0; w < words; ++w) {
-    const std::uint64_t retest = gridMovedBits_[w];
-    if (retest == 0) continue;
-    std::uint64_t reach[fusedBorders] = {};
-    for (std::size_t k = 0; k < borders; ++k) reach[k] = borderReach_[k * words + w] & ~retest;
-    const BoundingBox* const boxes = gridBoxes_.data() + 64 * w;
-    static_assert(fusedBorders == 4, "a case per border count");
-    switch (borders) {
-      case 1:
-        reachWord<1>(lines, boxes, retest, reach);
-        break;
-      case 2:
-        reachWord<2>(lines, boxes, retest, reach);
-        break;
-      case 3:
-        reachWord<3>(lines, boxes, retest, reach);
-        break;
-      default:  // fusedBorders
-        reachWord<4>(lines, boxes, retest, reach);
-        break;
-    }
-    for (std::size_t k = 0; k < borders; ++k) borderReach_[k * words + w] = reach[k];
+#if defined(THYRIX_SIMD_AVX2_DISPATCH)
+  if (processorHasAvx2()) {
+    reachTogetherAvx2(lines, borders, gridMovedBits_.data(), gridBoxes_.data(), borderReach_.data(),
+                      words);
+    return true;
   }
+#endif
+  reachTogether<simd::Native<real>>(lines, borders, gridMovedBits_.data(), gridBoxes_.data(),
+                                    borderReach_.data(), words);
   return true;
 }
 

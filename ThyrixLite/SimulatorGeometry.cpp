@@ -2,7 +2,7 @@
 /// @brief Phase 2 of a step, first part: the shapes' geometry and grid boxes (what moved).
 #include <ThyrixLite/Border.h>
 #include <ThyrixLite/Simulator.h>
-#include <ThyrixLite/Wide.h>
+#include <Tools/Wide.h>
 #include <Tools/Inlining.h>
 #include <Tools/ProcessorFeatures.h>
 

@@ -1,7 +1,7 @@
 #include <ThyrixLite/GUI.h>
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixLite/Simulator.h>
-#include <ThyrixLite/Wide.h>
+#include <Tools/Wide.h>
 #include <ThyrixPro/ArticulatedAgentBase.h>
 
 #include <algorithm>

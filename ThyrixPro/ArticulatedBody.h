@@ -8,7 +8,7 @@
 #include <ThyrixLite/ThyrixParameters.h>
 #include <ThyrixLite/Vector2.h>
 #include <ThyrixLite/Vector3.h>
-#include <ThyrixLite/Wide.h>
+#include <Tools/Wide.h>
 #include <ThyrixPro/ArticulatedLink.h>
 
 #include <bit>

@@ -155,10 +155,10 @@ void ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const real*
         const Pair products = a * simd::swapped(b);
         return low(products) - high(products);
       };
-      // A h = (yz r.x - yy r.y, zz r.x - yz r.y) from (yy, zz), yz and r
-      const auto aTimesH = [&](Pair yyZz, Real yz, Real rx, Real ry) {
-        return simd::pair(yz, high(yyZz)) * Pair::broadcast(rx) -
-               simd::pair(low(yyZz), yz) * Pair::broadcast(ry);
+      // A h = (yz r.x - yy r.y, zz r.x - yz r.y) from (yy, zz), (yz, yz) and r
+      const auto aTimesH = [](Pair yyZz, Pair yz, Real rx, Real ry) {
+        return simd::highs(yz, yyZz) * Pair::broadcast(rx) -
+               simd::lows(yyZz, yz) * Pair::broadcast(ry);
       };
       const Pair negateLow = simd::pair(real(-0.0), real(0.0));
       const Pair zero = Pair::broadcast(0);
@@ -172,13 +172,13 @@ void ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const real*
       // registers, it would leave too few for the terms carried.
       const Vector3& uniform = w.wrenches->link;
       // Link i's articulated inertia D_i before its joint, as the child left it: xx, b = (xy,
-      // xz), (yy, zz), and yz (+0 at the leaf and never -0, as x - y is -0 only for
+      // xz), (yy, zz), and yz in both lanes (+0 at the leaf and never -0, as x - y is -0 only for
       // x = -0, so yz is 0 + yz bit for bit without the addition).
       const std::size_t leaf = w.n - 1;
       Real dxx = links[leaf].inertiaAboutJoint;
       Pair b = ownB(leaf);
       Pair yyZz = Pair::broadcast(links[leaf].mass);
-      Real yz = 0;
+      Pair yz = zero;
       Real moment = 0;
       Pair force = zero;
       // Link i >= 1, whose parent is link p = i - 1.
@@ -195,8 +195,8 @@ void ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const real*
         const Real hah = crossOf(r, ah);
         // The parent's terms as above, with its own added.
         const Real ownPlusHah = links[p].inertiaAboutJoint + hah;
-        const Pair bb = b * b;               // (xy xy, xz xz)
-        const Real bxBy = low(b) * high(b);  // xy xz
+        const Pair bb = b * b;                   // (xy xy, xz xz)
+        const Pair bxBy = b * simd::swapped(b);  // xy xz in both lanes
         const Pair ownYyZz = Pair::broadcast(links[p].mass) + yyZz;
         const Pair ownAh = ownB(p) + ah;
         const Pair inverseDs = Pair::broadcast(inverseD);
@@ -206,7 +206,7 @@ void ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const real*
         const Pair betaG = beta * Pair::broadcast(g);
         dxx = ownPlusHah - gg * inverseD;
         yyZz = ownYyZz - bb * inverseDs;
-        yz = yz - bxBy * inverseD;
+        yz = yz - bxBy * inverseDs;
         b = ownAh - betaG;
         JointTerms& t = terms[i];
         t.inverseD = inverseD;
@@ -233,7 +233,7 @@ void ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const real*
       };
       for (std::size_t i = leaf; i > 0; --i) step(i);
       // Link 0's articulated inertia and the bias its child passes.
-      *w.inertiaCarried = {dxx, low(b), high(b), low(yyZz), yz, high(yyZz)};
+      *w.inertiaCarried = {dxx, low(b), high(b), low(yyZz), low(yz), high(yyZz)};
       *w.biasCarried = {moment, low(force), high(force)};
     };
     // In VEX form with AVX: the same operations (no fused multiply-add), so the same bits,

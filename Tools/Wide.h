@@ -4,30 +4,46 @@
 /// operations the core's vector kernels use. Every kernel is written once against it, and the
 /// intrinsics live here alone.
 ///
-/// The definitions are chosen at compile time: scalar (plain C++, always available, and the
-/// only one in a build configured with `THYRIX_SIMD=scalar`), SSE2 (every x86-64 build) and
-/// AVX2 (a build for a processor that has it, e.g. `-march=native`). Each operation does in
-/// every lane what its scalar definition does, in the same order, so every definition gives
-/// the same bits (multiply-adds are never fused: the build has `-ffp-contract=off`).
-#include <ThyrixLite/Config.h>
+/// The definitions: scalar (plain C++, always there, and the only one in a build configured
+/// with `THYRIX_SIMD=scalar`, which defines THYRIX_SIMD_SCALAR), SSE2 (every x86-64 build) and
+/// AVX2 (4 doubles or 8 floats; the native width of a build for a processor that has it, e.g.
+/// `-march=native`, and otherwise compiled into the kernels that a THYRIX_SIMD_AVX2_KERNEL
+/// entry chooses at run time, by processorHasAvx2()). Each operation does in every lane what
+/// its scalar definition does, in the same order, so every definition gives the same bits
+/// (multiply-adds are never fused: the build has `-ffp-contract=off`).
+///
+/// @def THYRIX_SIMD_AVX2_DISPATCH
+/// Defined where a kernel can also be compiled for AVX2 and chosen at run time.
+/// @def THYRIX_SIMD_AVX2_KERNEL
+/// The attributes of a kernel's AVX2 entry: compiled for AVX2 with everything it calls
+/// inlined into it (so that the kernel, a template compiled for the default target, and the
+/// AVX2 operations meet in one function compiled for AVX2).
+#include <Tools/ProcessorFeatures.h>
 
 #include <bit>
 #include <cstdint>
 #include <type_traits>
 
-#if !THYRIX_SIMD_SCALAR && (defined(__SSE2__) || defined(_M_X64))
+#if !defined(THYRIX_SIMD_SCALAR) && (defined(__SSE2__) || defined(_M_X64))
 #define THYRIX_SIMD_SSE2 1
 #include <emmintrin.h>
-#if defined(__AVX2__)
+#if defined(__AVX2__) || defined(THYRIX_AVX_DISPATCH)
 #define THYRIX_SIMD_AVX2 1
 #include <immintrin.h>
 #endif
 #endif
+#if defined(THYRIX_SIMD_AVX2) && defined(THYRIX_AVX_DISPATCH)
+#define THYRIX_SIMD_AVX2_DISPATCH 1
+#define THYRIX_SIMD_AVX2_KERNEL [[gnu::target("avx2"), gnu::flatten]]
+#define THYRIX_SIMD_AVX2_FUNCTION [[gnu::target("avx2")]]
+#elif defined(THYRIX_SIMD_AVX2)
+#define THYRIX_SIMD_AVX2_FUNCTION
+#endif
 
 namespace thyrix::simd {
 
-/// The name of the definitions this build uses: "scalar", "sse2" or "avx2".
-#if defined(THYRIX_SIMD_AVX2)
+/// The name of the definitions this build uses natively: "scalar", "sse2" or "avx2".
+#if defined(THYRIX_SIMD_AVX2) && defined(__AVX2__)
 inline constexpr const char* kind = "avx2";
 #elif defined(THYRIX_SIMD_SSE2)
 inline constexpr const char* kind = "sse2";
@@ -298,11 +314,13 @@ template <>
 struct Mask<double, 4> {
   __m256d m;  ///< all ones in a true lane
   /// Lane i's truth as bit i.
-  [[nodiscard]] std::uint32_t bits() const {
+  THYRIX_SIMD_AVX2_FUNCTION [[nodiscard]] std::uint32_t bits() const {
     return static_cast<std::uint32_t>(_mm256_movemask_pd(m));
   }
   /// Both masks' lanes true.
-  friend Mask operator&(Mask a, Mask b) { return {_mm256_and_pd(a.m, b.m)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Mask operator&(Mask a, Mask b) {
+    return {_mm256_and_pd(a.m, b.m)};
+  }
 };
 
 /// The AVX2 definition of Wide<double, 4>.
@@ -312,31 +330,43 @@ struct Wide<double, 4> {
   static constexpr int lanes = 4;
   __m256d v;  ///< the register
   /// See the scalar definition.
-  static Wide load(const double* p) { return {_mm256_loadu_pd(p)}; }
+  THYRIX_SIMD_AVX2_FUNCTION static Wide load(const double* p) { return {_mm256_loadu_pd(p)}; }
   /// See the scalar definition.
-  static Wide broadcast(double x) { return {_mm256_set1_pd(x)}; }
+  THYRIX_SIMD_AVX2_FUNCTION static Wide broadcast(double x) { return {_mm256_set1_pd(x)}; }
   /// See the scalar definition.
-  void store(double* p) const { _mm256_storeu_pd(p, v); }
+  THYRIX_SIMD_AVX2_FUNCTION void store(double* p) const { _mm256_storeu_pd(p, v); }
   /// See the scalar definition.
-  [[nodiscard]] double first() const { return _mm256_cvtsd_f64(v); }
+  THYRIX_SIMD_AVX2_FUNCTION [[nodiscard]] double first() const { return _mm256_cvtsd_f64(v); }
   /// See the scalar definition.
-  friend Wide operator+(Wide a, Wide b) { return {_mm256_add_pd(a.v, b.v)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Wide operator+(Wide a, Wide b) {
+    return {_mm256_add_pd(a.v, b.v)};
+  }
   /// See the scalar definition.
-  friend Wide operator-(Wide a, Wide b) { return {_mm256_sub_pd(a.v, b.v)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Wide operator-(Wide a, Wide b) {
+    return {_mm256_sub_pd(a.v, b.v)};
+  }
   /// See the scalar definition.
-  friend Wide operator*(Wide a, Wide b) { return {_mm256_mul_pd(a.v, b.v)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Wide operator*(Wide a, Wide b) {
+    return {_mm256_mul_pd(a.v, b.v)};
+  }
   /// See the scalar definition.
-  friend Wide operator/(Wide a, Wide b) { return {_mm256_div_pd(a.v, b.v)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Wide operator/(Wide a, Wide b) {
+    return {_mm256_div_pd(a.v, b.v)};
+  }
   /// See the scalar definition.
-  friend Wide min(Wide a, Wide b) { return {_mm256_min_pd(a.v, b.v)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Wide min(Wide a, Wide b) { return {_mm256_min_pd(a.v, b.v)}; }
   /// See the scalar definition.
-  friend Wide max(Wide a, Wide b) { return {_mm256_max_pd(a.v, b.v)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Wide max(Wide a, Wide b) { return {_mm256_max_pd(a.v, b.v)}; }
   /// See the scalar definition.
-  friend Wide abs(Wide a) { return {_mm256_andnot_pd(_mm256_set1_pd(-0.0), a.v)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Wide abs(Wide a) {
+    return {_mm256_andnot_pd(_mm256_set1_pd(-0.0), a.v)};
+  }
   /// See the scalar definition.
-  friend Wide flipSigns(Wide a, Wide signs) { return {_mm256_xor_pd(a.v, signs.v)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Wide flipSigns(Wide a, Wide signs) {
+    return {_mm256_xor_pd(a.v, signs.v)};
+  }
   /// See the scalar definition.
-  friend Mask<double, 4> lessOrEqual(Wide a, Wide b) {
+  THYRIX_SIMD_AVX2_FUNCTION friend Mask<double, 4> lessOrEqual(Wide a, Wide b) {
     return {_mm256_cmp_pd(a.v, b.v, _CMP_LE_OQ)};
   }
 };
@@ -346,11 +376,13 @@ template <>
 struct Mask<float, 8> {
   __m256 m;  ///< all ones in a true lane
   /// Lane i's truth as bit i.
-  [[nodiscard]] std::uint32_t bits() const {
+  THYRIX_SIMD_AVX2_FUNCTION [[nodiscard]] std::uint32_t bits() const {
     return static_cast<std::uint32_t>(_mm256_movemask_ps(m));
   }
   /// Both masks' lanes true.
-  friend Mask operator&(Mask a, Mask b) { return {_mm256_and_ps(a.m, b.m)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Mask operator&(Mask a, Mask b) {
+    return {_mm256_and_ps(a.m, b.m)};
+  }
 };
 
 /// The AVX2 definition of Wide<float, 8>.
@@ -360,31 +392,43 @@ struct Wide<float, 8> {
   static constexpr int lanes = 8;
   __m256 v;  ///< the register
   /// See the scalar definition.
-  static Wide load(const float* p) { return {_mm256_loadu_ps(p)}; }
+  THYRIX_SIMD_AVX2_FUNCTION static Wide load(const float* p) { return {_mm256_loadu_ps(p)}; }
   /// See the scalar definition.
-  static Wide broadcast(float x) { return {_mm256_set1_ps(x)}; }
+  THYRIX_SIMD_AVX2_FUNCTION static Wide broadcast(float x) { return {_mm256_set1_ps(x)}; }
   /// See the scalar definition.
-  void store(float* p) const { _mm256_storeu_ps(p, v); }
+  THYRIX_SIMD_AVX2_FUNCTION void store(float* p) const { _mm256_storeu_ps(p, v); }
   /// See the scalar definition.
-  [[nodiscard]] float first() const { return _mm256_cvtss_f32(v); }
+  THYRIX_SIMD_AVX2_FUNCTION [[nodiscard]] float first() const { return _mm256_cvtss_f32(v); }
   /// See the scalar definition.
-  friend Wide operator+(Wide a, Wide b) { return {_mm256_add_ps(a.v, b.v)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Wide operator+(Wide a, Wide b) {
+    return {_mm256_add_ps(a.v, b.v)};
+  }
   /// See the scalar definition.
-  friend Wide operator-(Wide a, Wide b) { return {_mm256_sub_ps(a.v, b.v)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Wide operator-(Wide a, Wide b) {
+    return {_mm256_sub_ps(a.v, b.v)};
+  }
   /// See the scalar definition.
-  friend Wide operator*(Wide a, Wide b) { return {_mm256_mul_ps(a.v, b.v)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Wide operator*(Wide a, Wide b) {
+    return {_mm256_mul_ps(a.v, b.v)};
+  }
   /// See the scalar definition.
-  friend Wide operator/(Wide a, Wide b) { return {_mm256_div_ps(a.v, b.v)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Wide operator/(Wide a, Wide b) {
+    return {_mm256_div_ps(a.v, b.v)};
+  }
   /// See the scalar definition.
-  friend Wide min(Wide a, Wide b) { return {_mm256_min_ps(a.v, b.v)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Wide min(Wide a, Wide b) { return {_mm256_min_ps(a.v, b.v)}; }
   /// See the scalar definition.
-  friend Wide max(Wide a, Wide b) { return {_mm256_max_ps(a.v, b.v)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Wide max(Wide a, Wide b) { return {_mm256_max_ps(a.v, b.v)}; }
   /// See the scalar definition.
-  friend Wide abs(Wide a) { return {_mm256_andnot_ps(_mm256_set1_ps(-0.0f), a.v)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Wide abs(Wide a) {
+    return {_mm256_andnot_ps(_mm256_set1_ps(-0.0f), a.v)};
+  }
   /// See the scalar definition.
-  friend Wide flipSigns(Wide a, Wide signs) { return {_mm256_xor_ps(a.v, signs.v)}; }
+  THYRIX_SIMD_AVX2_FUNCTION friend Wide flipSigns(Wide a, Wide signs) {
+    return {_mm256_xor_ps(a.v, signs.v)};
+  }
   /// See the scalar definition.
-  friend Mask<float, 8> lessOrEqual(Wide a, Wide b) {
+  THYRIX_SIMD_AVX2_FUNCTION friend Mask<float, 8> lessOrEqual(Wide a, Wide b) {
     return {_mm256_cmp_ps(a.v, b.v, _CMP_LE_OQ)};
   }
 };
@@ -393,7 +437,7 @@ struct Wide<float, 8> {
 /// The widest lane count of @p T this build has a register for (1 in a scalar build).
 template <class T>
 inline constexpr int nativeLanes =
-#if defined(THYRIX_SIMD_AVX2)
+#if defined(THYRIX_SIMD_AVX2) && defined(__AVX2__)
     32 / static_cast<int>(sizeof(T));
 #elif defined(THYRIX_SIMD_SSE2)
     16 / static_cast<int>(sizeof(T));
@@ -401,8 +445,12 @@ inline constexpr int nativeLanes =
     1;
 #endif
 
-/// As many lanes of @p T as a register holds.
+/// As many lanes of @p T as a register of the build's target holds.
 template <class T>
 using Native = Wide<T, nativeLanes<T>>;
+
+/// As many lanes of @p T as an AVX2 register holds (the kernels' entries for AVX2 use it).
+template <class T>
+using Avx2 = Wide<T, 32 / static_cast<int>(sizeof(T))>;
 
 }  // namespace thyrix::simd
