@@ -91,10 +91,12 @@ void overlapRowsOf(const BoundingBox* boxes, Rows rows, const BoxColumns& soa,
       std::uint64_t word = 0;
       for (std::uint32_t j = 0; j < end; j += W::lanes) {
         const std::uint32_t at = base + j;
+        // (lower <= upper written upper >= lower where the lower is loaded: the load is then
+        // the comparison's operand.)
         const auto hit = lessOrEqual(boxLowerX, W::load(soa.upperX + at)) &
-                         lessOrEqual(W::load(soa.lowerX + at), boxUpperX) &
+                         greaterOrEqual(boxUpperX, W::load(soa.lowerX + at)) &
                          lessOrEqual(boxLowerY, W::load(soa.upperY + at)) &
-                         lessOrEqual(W::load(soa.lowerY + at), boxUpperY);
+                         greaterOrEqual(boxUpperY, W::load(soa.lowerY + at));
         word |= std::uint64_t{hit.bits()} << j;
       }
       row[base / 64] = word;

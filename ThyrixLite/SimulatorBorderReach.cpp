@@ -68,28 +68,35 @@ void reachWord(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t 
   }
   const W half = W::broadcast(real(0.5));
   const W zero = W::broadcast(real(0));
-  std::uint64_t found[Borders] = {};
-  const auto test = [&](std::size_t j) {
+  using Bits = simd::Words<real, lanes>;
+  Bits bits[groups];
+  for (std::size_t g = 0; g < groups; ++g) bits[g] = Bits::broadcast(0);
+  // Box j's bit @p bit set in the lanes of the borders it reaches behind.
+  const auto test = [&](std::size_t j, Bits bit) {
     const BoundingBox& box = boxes[j];
     const W lowerX = W::broadcast(box.lower.x), lowerY = W::broadcast(box.lower.y);
     const W upperX = W::broadcast(box.upper.x), upperY = W::broadcast(box.upper.y);
     const W centreX = (lowerX + upperX) * half, centreY = (lowerY + upperY) * half;
     const W halfX = (upperX - lowerX) * half, halfY = (upperY - lowerY) * half;
-    std::uint32_t hits = 0;
     for (std::size_t g = 0; g < groups; ++g) {
       // dot(centre - point, normal) - extent <= 0, the extent along the normal.
       const W along = (centreX - pointX[g]) * normalX[g] + (centreY - pointY[g]) * normalY[g];
       const W extent = absX[g] * halfX + absY[g] * halfY;
-      hits |= lessOrEqual(along - extent, zero).bits() << (g * lanes);
+      bits[g] = bits[g] | select(lessOrEqual(along - extent, zero), bit);
     }
-    for (std::size_t k = 0; k < Borders; ++k) found[k] |= std::uint64_t{(hits >> k) & 1} << j;
   };
   if (retest == ~std::uint64_t{0}) {
-    for (std::size_t j = 0; j < 64; ++j) test(j);
+    Bits bit = Bits::broadcast(1);
+    for (std::size_t j = 0; j < 64; ++j) {
+      test(j, bit);
+      bit = bit + bit;
+    }
   } else {
-    for (std::uint64_t bits = retest; bits != 0; bits &= bits - 1)
-      test(static_cast<std::size_t>(std::countr_zero(bits)));
+    for (std::uint64_t rest = retest; rest != 0; rest &= rest - 1)
+      test(static_cast<std::size_t>(std::countr_zero(rest)), Bits::broadcast(rest & (~rest + 1)));
   }
+  std::uint64_t found[groups * lanes];
+  for (std::size_t g = 0; g < groups; ++g) bits[g].store(found + g * lanes);
   for (std::size_t k = 0; k < Borders; ++k) reach[k] |= found[k];
 }
 

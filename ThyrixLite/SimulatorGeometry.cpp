@@ -63,19 +63,20 @@ inline void includeCapsuleBox(const Vector2& p0, const Vector2& p1, real radius,
 }
 
 /// Adds @p box to @p extents, the next grid box in slot order, as BroadPhase gathers them
-/// (Extents::add): the same operations in the same order, so the same sums.
+/// (Extents::add): the same operations in the same order, so the same sums. Each pair of
+/// fields is read and written at once (a chain's links add theirs one after the other).
 inline void addExtents(const BoundingBox& box, SweepAndPrune::Extents& extents) {
+  using Extents = SweepAndPrune::Extents;
+  static_assert(std::is_standard_layout_v<Extents> &&
+                    offsetof(Extents, sumY) == offsetof(Extents, sumX) + sizeof(real) &&
+                    offsetof(Extents, lowY) == offsetof(Extents, lowX) + sizeof(real) &&
+                    offsetof(Extents, highY) == offsetof(Extents, highX) + sizeof(real),
+                "the extents are read as pairs (x, y)");
   const Pair lower = load(box.lower);
   const Pair upper = load(box.upper);
-  const Pair sums = simd::pair(extents.sumX, extents.sumY) + (upper - lower);
-  const Pair low = min(lower, simd::pair(extents.lowX, extents.lowY));
-  const Pair high = max(upper, simd::pair(extents.highX, extents.highY));
-  extents.sumX = sums.at(0);
-  extents.sumY = sums.at(1);
-  extents.lowX = low.at(0);
-  extents.lowY = low.at(1);
-  extents.highX = high.at(0);
-  extents.highY = high.at(1);
+  (Pair::load(&extents.sumX) + (upper - lower)).store(&extents.sumX);
+  min(lower, Pair::load(&extents.lowX)).store(&extents.lowX);
+  max(upper, Pair::load(&extents.highX)).store(&extents.highX);
 }
 
 /// A capsule's geometry from its centre @p r and half axis @p axis, exactly as

@@ -144,9 +144,47 @@ struct Wide {
     for (int i = 0; i < N; ++i) m.lane[i] = a.lane[i] <= b.lane[i];
     return m;
   }
+  /// `a >= b` in every lane (false where either is NaN).
+  friend Mask<T, N> greaterOrEqual(Wide a, Wide b) {
+    Mask<T, N> m;
+    for (int i = 0; i < N; ++i) m.lane[i] = a.lane[i] >= b.lane[i];
+    return m;
+  }
 
  private:
   static constexpr BitsOf<T> signBit = BitsOf<T>{1} << (8 * sizeof(T) - 1);
+};
+
+/// One 64-bit word per lane of a Wide<T, N> (bit sets, one per lane). The scalar definition.
+template <class T, int N>
+struct Words {
+  std::uint64_t lane[N];  ///< the lanes, lane 0 first
+  /// @p x in every lane.
+  static Words broadcast(std::uint64_t x) {
+    Words w;
+    for (int i = 0; i < N; ++i) w.lane[i] = x;
+    return w;
+  }
+  /// Stores the lanes at @p p[0] to @p p[N - 1].
+  void store(std::uint64_t* p) const {
+    for (int i = 0; i < N; ++i) p[i] = lane[i];
+  }
+  /// `a | b` in every lane.
+  friend Words operator|(Words a, Words b) {
+    for (int i = 0; i < N; ++i) a.lane[i] |= b.lane[i];
+    return a;
+  }
+  /// `a + b` in every lane (modulo 2^64).
+  friend Words operator+(Words a, Words b) {
+    for (int i = 0; i < N; ++i) a.lane[i] += b.lane[i];
+    return a;
+  }
+  /// @p w where @p m is true, 0 elsewhere.
+  friend Words select(Mask<T, N> m, Words w) {
+    const std::uint32_t bits = m.bits();
+    for (int i = 0; i < N; ++i) w.lane[i] = ((bits >> i) & 1) != 0 ? w.lane[i] : 0;
+    return w;
+  }
 };
 
 /// Two lanes (a 2D vector's x and y): (@p x, @p y).
@@ -238,6 +276,8 @@ struct Wide<double, 2> {
   friend Wide flipSigns(Wide a, Wide signs) { return {_mm_xor_pd(a.v, signs.v)}; }
   /// See the scalar definition.
   friend Mask<double, 2> lessOrEqual(Wide a, Wide b) { return {_mm_cmple_pd(a.v, b.v)}; }
+  /// See the scalar definition.
+  friend Mask<double, 2> greaterOrEqual(Wide a, Wide b) { return {_mm_cmpge_pd(a.v, b.v)}; }
 };
 
 /// See the scalar definition.
@@ -260,6 +300,24 @@ template <>
 inline Wide<double, 2> highs(Wide<double, 2> a, Wide<double, 2> b) {
   return {_mm_unpackhi_pd(a.v, b.v)};
 }
+
+/// The SSE2 definition of Words<double, 2>.
+template <>
+struct Words<double, 2> {
+  __m128i v;  ///< the register
+  /// See the scalar definition.
+  static Words broadcast(std::uint64_t x) { return {_mm_set1_epi64x(static_cast<long long>(x))}; }
+  /// See the scalar definition.
+  void store(std::uint64_t* p) const { _mm_storeu_si128(reinterpret_cast<__m128i*>(p), v); }
+  /// See the scalar definition.
+  friend Words operator|(Words a, Words b) { return {_mm_or_si128(a.v, b.v)}; }
+  /// See the scalar definition.
+  friend Words operator+(Words a, Words b) { return {_mm_add_epi64(a.v, b.v)}; }
+  /// See the scalar definition.
+  friend Words select(Mask<double, 2> m, Words w) {
+    return {_mm_and_si128(_mm_castpd_si128(m.m), w.v)};
+  }
+};
 
 /// The SSE2 definition of Mask<float, 4>.
 template <>
@@ -305,6 +363,8 @@ struct Wide<float, 4> {
   friend Wide flipSigns(Wide a, Wide signs) { return {_mm_xor_ps(a.v, signs.v)}; }
   /// See the scalar definition.
   friend Mask<float, 4> lessOrEqual(Wide a, Wide b) { return {_mm_cmple_ps(a.v, b.v)}; }
+  /// See the scalar definition.
+  friend Mask<float, 4> greaterOrEqual(Wide a, Wide b) { return {_mm_cmpge_ps(a.v, b.v)}; }
 };
 #endif
 
@@ -369,6 +429,36 @@ struct Wide<double, 4> {
   THYRIX_SIMD_AVX2_FUNCTION friend Mask<double, 4> lessOrEqual(Wide a, Wide b) {
     return {_mm256_cmp_pd(a.v, b.v, _CMP_LE_OQ)};
   }
+  /// See the scalar definition.
+  THYRIX_SIMD_AVX2_FUNCTION friend Mask<double, 4> greaterOrEqual(Wide a, Wide b) {
+    return {_mm256_cmp_pd(a.v, b.v, _CMP_GE_OQ)};
+  }
+};
+
+/// The AVX2 definition of Words<double, 4>.
+template <>
+struct Words<double, 4> {
+  __m256i v;  ///< the register
+  /// See the scalar definition.
+  THYRIX_SIMD_AVX2_FUNCTION static Words broadcast(std::uint64_t x) {
+    return {_mm256_set1_epi64x(static_cast<long long>(x))};
+  }
+  /// See the scalar definition.
+  THYRIX_SIMD_AVX2_FUNCTION void store(std::uint64_t* p) const {
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), v);
+  }
+  /// See the scalar definition.
+  THYRIX_SIMD_AVX2_FUNCTION friend Words operator|(Words a, Words b) {
+    return {_mm256_or_si256(a.v, b.v)};
+  }
+  /// See the scalar definition.
+  THYRIX_SIMD_AVX2_FUNCTION friend Words operator+(Words a, Words b) {
+    return {_mm256_add_epi64(a.v, b.v)};
+  }
+  /// See the scalar definition.
+  THYRIX_SIMD_AVX2_FUNCTION friend Words select(Mask<double, 4> m, Words w) {
+    return {_mm256_and_si256(_mm256_castpd_si256(m.m), w.v)};
+  }
 };
 
 /// The AVX2 definition of Mask<float, 8>.
@@ -430,6 +520,10 @@ struct Wide<float, 8> {
   /// See the scalar definition.
   THYRIX_SIMD_AVX2_FUNCTION friend Mask<float, 8> lessOrEqual(Wide a, Wide b) {
     return {_mm256_cmp_ps(a.v, b.v, _CMP_LE_OQ)};
+  }
+  /// See the scalar definition.
+  THYRIX_SIMD_AVX2_FUNCTION friend Mask<float, 8> greaterOrEqual(Wide a, Wide b) {
+    return {_mm256_cmp_ps(a.v, b.v, _CMP_GE_OQ)};
   }
 };
 #endif
