@@ -21,20 +21,28 @@ std::uint64_t wordMask(std::size_t word, std::size_t count) {
   return rest >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << rest) - 1;
 }
 
-/// A border's line as its reach test reads it.
-struct BorderLine {
-  Vector2 point;
-  Vector2 normal;
-  Vector2 absNormal;  // |normal.x|, |normal.y|
-};
-
-/// The line of a border through @p point with unit @p normal.
-BorderLine borderLine(Vector2 point, Vector2 normal) {
-  return {point, normal, {std::abs(normal.x), std::abs(normal.y)}};
-}
-
 /// Up to this many unmoved borders have their reach updated together (the piles have 3).
 constexpr std::size_t fusedBorders = 4;
+
+/// The lines of up to fusedBorders borders by coordinate, each through its point with its unit
+/// normal; the slots past the last border repeat it (whole registers of borders).
+struct BorderLines {
+  real pointX[fusedBorders];
+  real pointY[fusedBorders];
+  real normalX[fusedBorders];
+  real normalY[fusedBorders];
+};
+
+/// Sets the line of border @p k of @p lines, and of the slots after it, through @p point with
+/// unit @p normal.
+void setLine(BorderLines& lines, std::size_t k, Vector2 point, Vector2 normal) {
+  for (std::size_t slot = k; slot < fusedBorders; ++slot) {
+    lines.pointX[slot] = point.x;
+    lines.pointY[slot] = point.y;
+    lines.normalX[slot] = normal.x;
+    lines.normalY[slot] = normal.y;
+  }
+}
 
 /// Sets in @p reach (one word per border of @p lines) the bits of @p retest whose boxes (from
 /// @p boxes, the word's first) reach behind each border, that is, unless the box (margin
@@ -43,28 +51,19 @@ constexpr std::size_t fusedBorders = 4;
 /// bits set without a branch; a whole word of moved shapes (a crowd in motion) is tested
 /// without the walk over its bits.
 template <std::size_t Borders, class W = simd::Native<real>>
-void reachWord(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t retest,
+void reachWord(const BorderLines& lines, const BoundingBox* boxes, std::uint64_t retest,
                std::uint64_t* reach) {
   constexpr std::size_t lanes = W::lanes;
   constexpr std::size_t groups = (Borders + lanes - 1) / lanes;
+  static_assert(groups * lanes <= fusedBorders, "the lines fill whole registers");
   W pointX[groups], pointY[groups], normalX[groups], normalY[groups], absX[groups], absY[groups];
   for (std::size_t g = 0; g < groups; ++g) {
-    real column[6][lanes];
-    for (std::size_t l = 0; l < lanes; ++l) {
-      const BorderLine& line = lines[std::min(g * lanes + l, Borders - 1)];
-      column[0][l] = line.point.x;
-      column[1][l] = line.point.y;
-      column[2][l] = line.normal.x;
-      column[3][l] = line.normal.y;
-      column[4][l] = line.absNormal.x;
-      column[5][l] = line.absNormal.y;
-    }
-    pointX[g] = W::load(column[0]);
-    pointY[g] = W::load(column[1]);
-    normalX[g] = W::load(column[2]);
-    normalY[g] = W::load(column[3]);
-    absX[g] = W::load(column[4]);
-    absY[g] = W::load(column[5]);
+    pointX[g] = W::load(lines.pointX + g * lanes);
+    pointY[g] = W::load(lines.pointY + g * lanes);
+    normalX[g] = W::load(lines.normalX + g * lanes);
+    normalY[g] = W::load(lines.normalY + g * lanes);
+    absX[g] = abs(normalX[g]);
+    absY[g] = abs(normalY[g]);
   }
   const W half = W::broadcast(real(0.5));
   const W zero = W::broadcast(real(0));
@@ -103,7 +102,7 @@ void reachWord(const BorderLine* lines, const BoundingBox* boxes, std::uint64_t 
 /// findBorderReachTogether()'s loop over the words of @p movedBits, for @p borders borders
 /// (at most fusedBorders) of @p lines, in registers of @p W.
 template <class W>
-void reachTogether(const BorderLine* lines, std::size_t borders, const std::uint64_t* movedBits,
+void reachTogether(const BorderLines& lines, std::size_t borders, const std::uint64_t* movedBits,
                    const BoundingBox* gridBoxes, std::uint64_t* borderReach, std::size_t words) {
   for (std::size_t w = 0; w < words; ++w) {
     const std::uint64_t retest = movedBits[w];
@@ -132,7 +131,7 @@ void reachTogether(const BorderLine* lines, std::size_t borders, const std::uint
 
 #if defined(THYRIX_SIMD_AVX2_DISPATCH)
 /// reachTogether() in AVX2 registers: four borders (an arena's) in one.
-THYRIX_SIMD_AVX2_KERNEL void reachTogetherAvx2(const BorderLine* lines, std::size_t borders,
+THYRIX_SIMD_AVX2_KERNEL void reachTogetherAvx2(const BorderLines& lines, std::size_t borders,
                                                const std::uint64_t* movedBits,
                                                const BoundingBox* gridBoxes,
                                                std::uint64_t* borderReach, std::size_t words) {
@@ -144,13 +143,14 @@ THYRIX_SIMD_AVX2_KERNEL void reachTogetherAvx2(const BorderLine* lines, std::siz
 
 void Simulator::findBorderReach(std::size_t k, std::size_t words, bool borderMoved) {
   const std::uint32_t border = borderShapes_[k];
-  const BorderLine line = borderLine(geometry_[border].p0, geometry_[border].p1);
+  BorderLines line;
+  setLine(line, 0, geometry_[border].p0, geometry_[border].p1);
   const std::size_t count = gridShapes_.size();
   for (std::size_t w = 0; w < words; ++w) {
     const std::uint64_t retest = borderMoved ? wordMask(w, count) : gridMovedBits_[w];
     std::uint64_t& reach = borderReach_[k * words + w];
     reach &= ~retest;
-    reachWord<1>(&line, gridBoxes_.data() + 64 * w, retest, &reach);
+    reachWord<1>(line, gridBoxes_.data() + 64 * w, retest, &reach);
   }
 }
 
@@ -165,10 +165,10 @@ bool Simulator::findBorderReachTogether(std::size_t words) {
   if (borders > fusedBorders) return false;
   for (std::size_t k = 0; k < borders; ++k)
     if (shapeMoved_[borderShapes_[k]] != 0) return false;
-  BorderLine lines[fusedBorders];
+  BorderLines lines;
   for (std::size_t k = 0; k < borders; ++k) {
     const std::uint32_t border = borderShapes_[k];
-    lines[k] = borderLine(geometry_[border].p0, geometry_[border].p1);
+    setLine(lines, k, geometry_[border].p0, geometry_[border].p1);
   }
 #if defined(THYRIX_SIMD_AVX2_DISPATCH)
   if (processorHasAvx2()) {
