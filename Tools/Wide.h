@@ -13,7 +13,8 @@
 /// (multiply-adds are never fused: the build has `-ffp-contract=off`).
 ///
 /// @def THYRIX_SIMD_AVX2_DISPATCH
-/// Defined where a kernel can also be compiled for AVX2 and chosen at run time.
+/// Defined where a kernel can also be compiled for AVX2 and chosen at run time (an optimized
+/// build with GCC or Clang on x86-64).
 /// @def THYRIX_SIMD_AVX2_KERNEL
 /// The attributes of a kernel's AVX2 entry: compiled for AVX2 with everything it calls
 /// inlined into it (so that the kernel, a template compiled for the default target, and the
@@ -27,12 +28,14 @@
 #if !defined(THYRIX_SIMD_SCALAR) && (defined(__SSE2__) || defined(_M_X64))
 #define THYRIX_SIMD_SSE2 1
 #include <emmintrin.h>
-#if defined(__AVX2__) || defined(THYRIX_AVX_DISPATCH)
+#if defined(__AVX2__) || (defined(THYRIX_AVX_DISPATCH) && defined(__OPTIMIZE__))
 #define THYRIX_SIMD_AVX2 1
 #include <immintrin.h>
 #endif
 #endif
-#if defined(THYRIX_SIMD_AVX2) && defined(THYRIX_AVX_DISPATCH)
+// (Not without optimization: nothing is then inlined into the entry, and a 256-bit value would
+// cross a call between code compiled for two targets, which pass it differently.)
+#if defined(THYRIX_SIMD_AVX2) && defined(THYRIX_AVX_DISPATCH) && defined(__OPTIMIZE__)
 #define THYRIX_SIMD_AVX2_DISPATCH 1
 #define THYRIX_SIMD_AVX2_KERNEL [[gnu::target("avx2"), gnu::flatten]]
 #define THYRIX_SIMD_AVX2_FUNCTION [[gnu::target("avx2")]]
