@@ -112,12 +112,22 @@ THYRIX_SIMD_AVX2_KERNEL void overlapRowsAvx2(const BoundingBox* boxes, Rows rows
                                              const BoxColumns& soa, std::uint32_t count) {
   overlapRowsOf<simd::Avx2<real>>(boxes, rows, soa, count);
 }
+
+/// overlapRowsOf() in AVX-512 registers, eight doubles per comparison (a crowd in motion
+/// spends half its step here). A template on the real type: a float build never instantiates it.
+template <class Real, class Rows>
+THYRIX_SIMD_AVX512_KERNEL void overlapRowsAvx512(const BoundingBox* boxes, Rows rows,
+                                                 const BoxColumns& soa, std::uint32_t count) {
+  overlapRowsOf<simd::Wide<Real, 8>>(boxes, rows, soa, count);
+}
 #endif
 
 /// overlapRowsOf() in the widest registers the processor has.
 template <class Rows>
 void overlapRows(const BoundingBox* boxes, Rows rows, const BoxColumns& soa, std::uint32_t count) {
 #if defined(THYRIX_SIMD_AVX2_DISPATCH)
+  if constexpr (sizeof(real) == 8)
+    if (processorHasAvx512()) return overlapRowsAvx512<real>(boxes, rows, soa, count);
   if (processorHasAvx2()) return overlapRowsAvx2(boxes, rows, soa, count);
 #endif
   overlapRowsOf<simd::Native<real>>(boxes, rows, soa, count);

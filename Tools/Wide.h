@@ -15,6 +15,9 @@
 /// @def THYRIX_SIMD_AVX2_DISPATCH
 /// Defined where a kernel can also be compiled for AVX2 and chosen at run time (an optimized
 /// build with GCC or Clang on x86-64).
+/// @def THYRIX_SIMD_AVX512_KERNEL
+/// As THYRIX_SIMD_AVX2_KERNEL, for AVX-512 (its foundation, AVX512F): Wide<double, 8> has only
+/// the comparisons of the one kernel that earns it (the broad phase's rows of overlaps).
 /// @def THYRIX_SIMD_AVX2_KERNEL
 /// The attributes of a kernel's AVX2 entry: compiled for AVX2 with everything it calls
 /// inlined into it (so that the kernel, a template compiled for the default target, and the
@@ -39,6 +42,8 @@
 #define THYRIX_SIMD_AVX2_DISPATCH 1
 #define THYRIX_SIMD_AVX2_KERNEL [[gnu::target("avx2"), gnu::flatten]]
 #define THYRIX_SIMD_AVX2_FUNCTION [[gnu::target("avx2")]]
+#define THYRIX_SIMD_AVX512_KERNEL [[gnu::target("avx512f"), gnu::flatten]]
+#define THYRIX_SIMD_AVX512_FUNCTION [[gnu::target("avx512f")]]
 #elif defined(THYRIX_SIMD_AVX2)
 #define THYRIX_SIMD_AVX2_FUNCTION
 #endif
@@ -527,6 +532,40 @@ struct Wide<float, 8> {
   /// See the scalar definition.
   THYRIX_SIMD_AVX2_FUNCTION friend Mask<float, 8> greaterOrEqual(Wide a, Wide b) {
     return {_mm256_cmp_ps(a.v, b.v, _CMP_GE_OQ)};
+  }
+};
+#endif
+
+#if defined(THYRIX_SIMD_AVX2_DISPATCH)
+/// The AVX-512 definition of Mask<double, 8>.
+template <>
+struct Mask<double, 8> {
+  __mmask8 m;  ///< bit i for lane i
+  /// Lane i's truth as bit i.
+  THYRIX_SIMD_AVX512_FUNCTION [[nodiscard]] std::uint32_t bits() const { return m; }
+  /// Both masks' lanes true.
+  THYRIX_SIMD_AVX512_FUNCTION friend Mask operator&(Mask a, Mask b) {
+    return {static_cast<__mmask8>(a.m & b.m)};
+  }
+};
+
+/// The AVX-512 definition of Wide<double, 8>: loads and comparisons only.
+template <>
+struct Wide<double, 8> {
+  /// The number of lanes.
+  static constexpr int lanes = 8;
+  __m512d v;  ///< the register
+  /// See the scalar definition.
+  THYRIX_SIMD_AVX512_FUNCTION static Wide load(const double* p) { return {_mm512_loadu_pd(p)}; }
+  /// See the scalar definition.
+  THYRIX_SIMD_AVX512_FUNCTION static Wide broadcast(double x) { return {_mm512_set1_pd(x)}; }
+  /// See the scalar definition.
+  THYRIX_SIMD_AVX512_FUNCTION friend Mask<double, 8> lessOrEqual(Wide a, Wide b) {
+    return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_LE_OQ)};
+  }
+  /// See the scalar definition.
+  THYRIX_SIMD_AVX512_FUNCTION friend Mask<double, 8> greaterOrEqual(Wide a, Wide b) {
+    return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_GE_OQ)};
   }
 };
 #endif
