@@ -24,19 +24,22 @@ std::uint64_t wordMask(std::size_t word, std::size_t count) {
 /// Up to this many unmoved borders have their reach updated together (the piles have 3).
 constexpr std::size_t fusedBorders = 4;
 
+/// Slots of BorderLines: a whole register of the widest kind a kernel runs (8 floats in AVX2).
+constexpr std::size_t lineSlots = 8;
+
 /// The lines of up to fusedBorders borders by coordinate, each through its point with its unit
 /// normal; the slots past the last border repeat it (whole registers of borders).
 struct BorderLines {
-  real pointX[fusedBorders];
-  real pointY[fusedBorders];
-  real normalX[fusedBorders];
-  real normalY[fusedBorders];
+  real pointX[lineSlots];
+  real pointY[lineSlots];
+  real normalX[lineSlots];
+  real normalY[lineSlots];
 };
 
 /// Sets the line of border @p k of @p lines, and of the slots after it, through @p point with
 /// unit @p normal.
 void setLine(BorderLines& lines, std::size_t k, Vector2 point, Vector2 normal) {
-  for (std::size_t slot = k; slot < fusedBorders; ++slot) {
+  for (std::size_t slot = k; slot < lineSlots; ++slot) {
     lines.pointX[slot] = point.x;
     lines.pointY[slot] = point.y;
     lines.normalX[slot] = normal.x;
@@ -55,7 +58,7 @@ void reachWord(const BorderLines& lines, const BoundingBox* boxes, std::uint64_t
                std::uint64_t* reach) {
   constexpr std::size_t lanes = W::lanes;
   constexpr std::size_t groups = (Borders + lanes - 1) / lanes;
-  static_assert(groups * lanes <= fusedBorders, "the lines fill whole registers");
+  static_assert(groups * lanes <= lineSlots, "the lines fill whole registers");
   W pointX[groups], pointY[groups], normalX[groups], normalY[groups], absX[groups], absY[groups];
   for (std::size_t g = 0; g < groups; ++g) {
     pointX[g] = W::load(lines.pointX + g * lanes);
