@@ -1,19 +1,13 @@
 /// @file BroadPhase.cpp
 /// @brief BroadPhase above smallCount boxes: the sweep or the grid (dense or hashed).
 #include <ThyrixLite/BroadPhase.h>
+#include <Tools/Wide.h>
 #include <Tools/Inlining.h>
-#include <Tools/ProcessorFeatures.h>
 
 #include <algorithm>
 #include <bit>
 #include <cstring>
 #include <type_traits>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-#if defined(THYRIX_AVX_DISPATCH)
-#include <immintrin.h>
-#endif
 
 namespace thyrix {
 namespace {
@@ -76,19 +70,7 @@ constexpr std::int64_t cellLimit = std::int64_t{1} << 62;
 /// std::int64_t, without undefined behaviour, so that one look at the least and greatest
 /// cells tells whether every box is in range (cellLimit).
 std::int64_t floorToInt(real q) {
-#if defined(__SSE2__) && (defined(__x86_64__) || defined(_M_X64))
-  // The instruction the cast compiles to, whose result out of range is defined: the least
-  // std::int64_t (a pile pays nothing for the range test).
-  std::int64_t t;
-  if constexpr (std::is_same_v<real, double>)
-    t = _mm_cvttsd_si64(_mm_set_sd(q));
-  else  // (the cast is a no-op in float; Clang checks this branch in double builds too)
-    t = _mm_cvttss_si64(_mm_set_ss(static_cast<float>(q)));
-#else
-  constexpr real bound = 0x1p63;  // (exact in float and double)
-  if (!(q >= -bound && q < bound)) return INT64_MIN;
-  const auto t = static_cast<std::int64_t>(q);
-#endif
+  const std::int64_t t = simd::truncateToInt64(q);
   // (Unsigned: q just below the least std::int64_t gives the greatest, out of cellLimit.)
   return static_cast<std::int64_t>(static_cast<std::uint64_t>(t) -
                                    std::uint64_t{static_cast<real>(t) > q});
@@ -100,102 +82,57 @@ bool inCellRange(Vector2 q) {
   return q.x >= -bound && q.x < bound && q.y >= -bound && q.y < bound;
 }
 
-/// The centre of @p box in cells of side @p cellSize. (A template, as gatherExtents: a float
-/// build never instantiates the double branch, whose conversions it warned about.)
-template <class Real>
-Vector2 centreInCells(const BoundingBox& box, Real cellSize) {
-#if defined(__SSE2__)
-  if constexpr (std::is_same_v<Real, double>) {
-    // x and y in one register: one addition, multiplication and division for both (GCC made
-    // two of each), the same operations on the same values.
-    const auto* const corners = reinterpret_cast<const Real*>(&box);
-    const __m128d q = _mm_div_pd(
-        _mm_mul_pd(_mm_add_pd(_mm_loadu_pd(corners), _mm_loadu_pd(corners + 2)), _mm_set1_pd(0.5)),
-        _mm_set1_pd(cellSize));
-    // (The casts change nothing in double; clang checks this branch in a float build too.)
-    return {static_cast<real>(_mm_cvtsd_f64(q)),
-            static_cast<real>(_mm_cvtsd_f64(_mm_unpackhi_pd(q, q)))};
-  }
-#endif
-  return (box.lower + box.upper) * real(0.5) / cellSize;
+/// Two reals as one value: a 2D vector's x and y.
+using Pair = simd::Wide<real, 2>;
+static_assert(std::is_standard_layout_v<BoundingBox> && sizeof(BoundingBox) == 4 * sizeof(real),
+              "a box is read as its two corners, each its x and y");
+
+/// The x and y of @p v as one value.
+Pair load(const Vector2& v) { return Pair::load(&v.x); }
+
+/// The centre of @p box in cells of side @p cellSize (x and y together: GCC made two of each
+/// operation otherwise).
+Vector2 centreInCells(const BoundingBox& box, real cellSize) {
+  const Pair q =
+      (load(box.lower) + load(box.upper)) * Pair::broadcast(real(0.5)) / Pair::broadcast(cellSize);
+  return {q.at(0), q.at(1)};
 }
 
 /// Adds every box of @p boxes, in index order, to @p extents (the sweep's) and, with
 /// @p forGrid, to the sum @p extentSum and the largest @p maxExtent of their extents (the
-/// grid's, see extent()). A template: a float build never instantiates the double branch.
-template <class Real, bool forGrid>
+/// grid's, see extent()): a box's x and y together. The same operations as
+/// SweepAndPrune::Extents::add and std::max: std::min(a, b) is `b < a ? b : a`, simd::min(b, a).
+template <bool forGrid>
 void gatherExtents(std::span<const BoundingBox> boxes, SweepAndPrune::Extents& extents,
-                   Real& extentSum, Real& maxExtent) {
-#if defined(__SSE2__)
-  if constexpr (std::is_same_v<Real, double>) {
-    // A box's x and y in the two halves of a register (a pile's boxes in every step): the
-    // same operations in the same order, so the same bits. std::min(a, b) is `b < a ? b : a`,
-    // which is MINPD(b, a), and std::max(a, b) is `a < b ? b : a`, MAXPD(b, a); the extent,
-    // std::max(x side, y side), is MAXSD(y side, x side).
-    static_assert(std::is_standard_layout_v<BoundingBox> && sizeof(BoundingBox) == 4 * sizeof(real),
-                  "a box is read as its four coordinates");
-    __m128d sums = _mm_set_pd(extents.sumY, extents.sumX);
-    __m128d low = _mm_set_pd(extents.lowY, extents.lowX);
-    __m128d high = _mm_set_pd(extents.highY, extents.highX);
-    __m128d sum = _mm_set_sd(extentSum);
-    __m128d most = _mm_set_sd(maxExtent);
-    for (const BoundingBox& box : boxes) {
-      const auto* const corners = reinterpret_cast<const Real*>(&box);
-      const __m128d lower = _mm_loadu_pd(corners);
-      const __m128d upper = _mm_loadu_pd(corners + 2);
-      const __m128d sides = _mm_sub_pd(upper, lower);
-      sums = _mm_add_pd(sums, sides);
-      low = _mm_min_pd(lower, low);
-      high = _mm_max_pd(upper, high);
-      if constexpr (forGrid) {
-        const __m128d side = _mm_max_sd(_mm_unpackhi_pd(sides, sides), sides);
-        sum = _mm_add_sd(sum, side);
-        most = _mm_max_sd(side, most);
-      }
-    }
-    // (The casts change nothing in double; clang checks this branch in a float build too.)
-    extents.sumX = static_cast<real>(_mm_cvtsd_f64(sums));
-    extents.sumY = static_cast<real>(_mm_cvtsd_f64(_mm_unpackhi_pd(sums, sums)));
-    extents.lowX = static_cast<real>(_mm_cvtsd_f64(low));
-    extents.lowY = static_cast<real>(_mm_cvtsd_f64(_mm_unpackhi_pd(low, low)));
-    extents.highX = static_cast<real>(_mm_cvtsd_f64(high));
-    extents.highY = static_cast<real>(_mm_cvtsd_f64(_mm_unpackhi_pd(high, high)));
-    extentSum = _mm_cvtsd_f64(sum);
-    maxExtent = _mm_cvtsd_f64(most);
-    return;
-  }
-#endif
+                   real& extentSum, real& maxExtent) {
+  Pair sums = simd::pair(extents.sumX, extents.sumY);
+  Pair low = simd::pair(extents.lowX, extents.lowY);
+  Pair high = simd::pair(extents.highX, extents.highY);
+  real sum = extentSum;
+  real most = maxExtent;
   for (const BoundingBox& box : boxes) {
-    extents.add(box);
+    const Pair lower = load(box.lower);
+    const Pair upper = load(box.upper);
+    const Pair sides = upper - lower;
+    sums = sums + sides;
+    low = min(lower, low);
+    high = max(upper, high);
     if constexpr (forGrid) {
-      extentSum += extent(box);
-      maxExtent = std::max(maxExtent, extent(box));
+      const real sideX = sides.at(0);
+      const real sideY = sides.at(1);
+      const real side = sideX < sideY ? sideY : sideX;
+      sum += side;
+      most = most < side ? side : most;
     }
   }
-}
-
-#if defined(THYRIX_AVX_DISPATCH)
-/// gatherExtents() in VEX form, chosen at run time: the same operations, so the same bits,
-/// without SSE2's register copies (3 of the sweep's 12 instructions a box).
-template <class Real, bool forGrid>
-[[gnu::target("avx")]] void gatherExtentsAvx(std::span<const BoundingBox> boxes,
-                                             SweepAndPrune::Extents& extents, Real& extentSum,
-                                             Real& maxExtent) {
-  gatherExtents<Real, forGrid>(boxes, extents, extentSum, maxExtent);
-}
-#endif
-
-/// gatherExtents(), in its AVX copy where the processor has it.
-template <class Real, bool forGrid>
-void gatherExtentsFast(std::span<const BoundingBox> boxes, SweepAndPrune::Extents& extents,
-                       Real& extentSum, Real& maxExtent) {
-#if defined(THYRIX_AVX_DISPATCH)
-  if (processorHasAvx()) {
-    gatherExtentsAvx<Real, forGrid>(boxes, extents, extentSum, maxExtent);
-    return;
-  }
-#endif
-  gatherExtents<Real, forGrid>(boxes, extents, extentSum, maxExtent);
+  extents.sumX = sums.at(0);
+  extents.sumY = sums.at(1);
+  extents.lowX = low.at(0);
+  extents.lowY = low.at(1);
+  extents.highX = high.at(0);
+  extents.highY = high.at(1);
+  extentSum = sum;
+  maxExtent = most;
 }
 
 }  // namespace
@@ -260,11 +197,11 @@ void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes,
   };
   const bool gridExpected = lastTookGrid_ || !allowSweep;
   if (gridExpected)
-    gatherExtentsFast<real, true>(boxes, extents, extentSum, maxExtent);
+    gatherExtents<true>(boxes, extents, extentSum, maxExtent);
   else if (gathered != nullptr)  // (the caller's: the same sums)
     extents = *gathered;
   else
-    gatherExtentsFast<real, false>(boxes, extents, extentSum, maxExtent);
+    gatherExtents<false>(boxes, extents, extentSum, maxExtent);
   lastTookGrid_ = false;
   if (allowSweep && sweep_.findPairs(boxes, extents, sweepTestsPerBox, pairs)) return;
   if (!gridExpected)
@@ -276,84 +213,21 @@ void BroadPhase::findPairsAmongMany(std::span<const BoundingBox> boxes,
 namespace {
 
 /// BoundingBox::overlaps of one box against others, as 1 or 0 without a branch (whether
-/// candidates of a grid overlap is random to the branch predictor).
-template <class Real>
+/// candidates of a grid overlap is random to the branch predictor): lower corners against
+/// upper corners, x and y together (a comparison with NaN is false, as in C++).
 class OverlapTest {
  public:
-  explicit OverlapTest(const BoundingBox& box) : box_(box) {}
+  explicit OverlapTest(const BoundingBox& box) : lower_(load(box.lower)), upper_(load(box.upper)) {}
   std::size_t operator()(const BoundingBox& o) const {
-    return static_cast<std::size_t>((box_.lower.x <= o.upper.x) & (o.lower.x <= box_.upper.x) &
-                                    (box_.lower.y <= o.upper.y) & (o.lower.y <= box_.upper.y));
-  }
-
- private:
-  BoundingBox box_;
-};
-
-#if defined(__SSE2__)
-// The same comparisons two or four at a time: lower corners against upper corners (a
-// comparison with NaN is false, as in C++). A box is its corners' coordinates in a row.
-template <>
-class OverlapTest<double> {
- public:
-  explicit OverlapTest(const BoundingBox& box)
-      : lower_(_mm_loadu_pd(row(box))), upper_(_mm_loadu_pd(row(box) + 2)) {}
-  std::size_t operator()(const BoundingBox& o) const {
-    const __m128d hit = _mm_and_pd(_mm_cmple_pd(lower_, _mm_loadu_pd(row(o) + 2)),
-                                   _mm_cmple_pd(_mm_loadu_pd(row(o)), upper_));
+    const auto hit = lessOrEqual(lower_, load(o.upper)) & lessOrEqual(load(o.lower), upper_);
     // 1 for both lanes' bits (3), else 0: an add and a shift (not a compare and a widening).
-    return (static_cast<std::uint32_t>(_mm_movemask_pd(hit)) + 1) >> 2;
+    return (hit.bits() + 1) >> 2;
   }
 
  private:
-  static const double* row(const BoundingBox& box) { return reinterpret_cast<const double*>(&box); }
-  __m128d lower_;
-  __m128d upper_;
+  Pair lower_;
+  Pair upper_;
 };
-
-template <>
-class OverlapTest<float> {
- public:
-  explicit OverlapTest(const BoundingBox& box)
-      : box_(_mm_loadu_ps(reinterpret_cast<const float*>(&box))) {}
-  std::size_t operator()(const BoundingBox& o) const {
-    const __m128 other = _mm_loadu_ps(reinterpret_cast<const float*>(&o));
-    // (box lower x, y, other lower x, y) <= (other upper x, y, box upper x, y)
-    const __m128 hit = _mm_cmple_ps(_mm_movelh_ps(box_, other), _mm_movehl_ps(box_, other));
-    return (static_cast<std::uint32_t>(_mm_movemask_ps(hit)) + 1) >> 4;  // 1 for 15, else 0
-  }
-
- private:
-  __m128 box_;
-};
-#endif
-
-#if defined(THYRIX_AVX_DISPATCH)
-/// OverlapTest<double> for the AVX copy of the dense grid's loop: the four comparisons in one
-/// register, the other box's corners (lower x, lower y, -upper x, -upper y) against this box's
-/// (upper x, upper y, -lower x, -lower y): -upper <= -lower is lower <= upper (a negation is
-/// exact, and a NaN stays NaN, which compares false). Only double is instantiated.
-template <class Real>
-class OverlapTestAvx {
- public:
-  [[gnu::target("avx")]] explicit OverlapTestAvx(const BoundingBox& box)
-      : signs_(_mm256_setr_pd(0.0, 0.0, -0.0, -0.0)),
-        reference_(_mm256_xor_pd(_mm256_permute2f128_pd(load(box), load(box), 0x01), signs_)) {}
-  [[gnu::target("avx")]] std::size_t operator()(const BoundingBox& o) const {
-    const __m256d hit = _mm256_cmp_pd(_mm256_xor_pd(load(o), signs_), reference_, _CMP_LE_OS);
-    return (static_cast<std::uint32_t>(_mm256_movemask_pd(hit)) + 1) >> 4;  // 1 for 15, else 0
-  }
-
- private:
-  static_assert(std::is_same_v<Real, double> && sizeof(BoundingBox) == 4 * sizeof(Real),
-                "a box is read as its four coordinates in one register");
-  [[gnu::target("avx")]] static __m256d load(const BoundingBox& box) {
-    return _mm256_loadu_pd(reinterpret_cast<const Real*>(&box));
-  }
-  __m256d signs_;
-  __m256d reference_;
-};
-#endif
 
 /// What the dense grid's candidate loop reads (BroadPhase's buffers, through plain pointers).
 struct DenseCells {
@@ -367,16 +241,14 @@ struct DenseCells {
 };
 
 /// The dense grid's candidate pairs, each written at the end of @p candidates (sized ahead for
-/// every candidate of the box at hand, grown when needed) and kept when @p Test says the boxes
-/// overlap; @return the number kept. Each pair comes as (other, box): the caller puts every
+/// every candidate of the box at hand, grown when needed) and kept when OverlapTest says the
+/// boxes overlap; @return the number kept. Each pair comes as (other, box): the caller puts every
 /// pair in order. The visiting order: for each box by index, its own cell (higher indices:
 /// those after the box itself, as a cell lists its boxes by index), then the cells (x+1, y-1),
 /// (x+1, y), (x+1, y+1), then (x, y+1), each by increasing index.
 /// Whether a candidate overlaps is random to the branch predictor: the pair is kept (the end
 /// advanced) without a branch.
-template <class Test>
-THYRIX_ALWAYS_INLINE std::size_t findDenseCandidates(const DenseCells& grid,
-                                                     std::vector<BoxPair>& candidates) {
+std::size_t findDenseCandidates(const DenseCells& grid, std::vector<BoxPair>& candidates) {
   std::size_t n = 0;
   BoxPair* out = candidates.data();
   std::size_t capacity = candidates.size();
@@ -403,12 +275,11 @@ THYRIX_ALWAYS_INLINE std::size_t findDenseCandidates(const DenseCells& grid,
       out = candidates.data();
       capacity = candidates.size();
     }
-    const Test overlaps(boxes[i]);
+    const OverlapTest overlaps(boxes[i]);
     // (j, i): the box's half of the word is made once, and each candidate's is its index.
     const std::uint64_t boxHalf = pairWord(0, i);
     // The three ranges of the sorted boxes, each loop written out: a loop over the ranges
-    // kept them on the stack, and a lambda, compiled for the default target, called the AVX
-    // test instead of inlining it.
+    // kept them on the stack.
 #define THYRIX_TEST_RANGE(begin, end)               \
   for (std::uint32_t k = (begin); k < (end); ++k) { \
     const std::uint32_t j = sorted[k];              \
@@ -421,28 +292,6 @@ THYRIX_ALWAYS_INLINE std::size_t findDenseCandidates(const DenseCells& grid,
 #undef THYRIX_TEST_RANGE
   }
   return n;
-}
-
-#if defined(THYRIX_AVX_DISPATCH)
-/// findDenseCandidates compiled for AVX: the overlap test in one register (OverlapTestAvx),
-/// and none of SSE2's register copies (18 instructions a candidate in SSE2, 14 here). The
-/// same comparisons: the same pairs.
-template <class Real>
-[[gnu::target("avx")]] std::size_t findDenseCandidatesAvx(const DenseCells& grid,
-                                                          std::vector<BoxPair>& candidates) {
-  return findDenseCandidates<OverlapTestAvx<Real>>(grid, candidates);
-}
-#endif
-
-/// findDenseCandidates, in AVX where the processor has it (double only). A template on the
-/// real type, so that a float build never instantiates the AVX copy.
-template <class Real>
-std::size_t findDenseCandidatesOf(const DenseCells& grid, std::vector<BoxPair>& candidates) {
-#if defined(THYRIX_AVX_DISPATCH)
-  if constexpr (std::is_same_v<Real, double>)
-    if (processorHasAvx()) return findDenseCandidatesAvx<Real>(grid, candidates);
-#endif
-  return findDenseCandidates<OverlapTest<Real>>(grid, candidates);
 }
 
 }  // namespace
@@ -497,7 +346,7 @@ void BroadPhase::findPairsInGrid(std::span<const BoundingBox> boxes, real extent
         setOversized(i);
         continue;
       }
-      const Vector2 q = centreInCells<real>(box, cellSize);
+      const Vector2 q = centreInCells(box, cellSize);
       if (decltype(checkRange)::value && !inCellRange(q)) {
         setOversized(i);
         continue;
@@ -601,7 +450,7 @@ void BroadPhase::findPairsInDenseGrid(std::span<const BoundingBox> boxes, std::i
   const DenseCells grid{
       boxes.data(), cellOfBox, slotOfBox_.data(), cellStart_.data(), sortedBoxes_.data(),
       count,        stride};
-  const std::size_t n = findDenseCandidatesOf<real>(grid, candidates_);
+  const std::size_t n = findDenseCandidates(grid, candidates_);
   BoxPair* const out = candidates_.data();
   // Each pair (lower index first) by a conditional move between its word and the word turned
   // by half (its halves swapped): which side of i j is on is random to the predictor (GCC

@@ -2,19 +2,12 @@
 /// @brief BroadPhase's incremental paths: up to smallCount boxes, every pair as one bit mask per
 /// box; above, when few boxes moved, the moved boxes against every box.
 #include <ThyrixLite/BroadPhase.h>
-#include <Tools/ProcessorFeatures.h>
-
 #include <Tools/Inlining.h>
+#include <Tools/Wide.h>
 
 #include <algorithm>
 #include <bit>
 #include <type_traits>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-#if defined(THYRIX_AVX_DISPATCH)
-#include <immintrin.h>
-#endif
 
 namespace thyrix {
 namespace {
@@ -28,33 +21,6 @@ using Bits = std::conditional_t<sizeof(real) == 8, std::uint64_t, std::uint32_t>
 std::uint64_t lowBits(std::uint32_t count) {
   return count >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
 }
-
-#if defined(__SSE2__)
-
-/// The SSE2 instructions of one precision: two doubles or four floats to a register.
-template <class Real>
-struct Sse;
-template <>
-struct Sse<double> {
-  using Vector = __m128d;
-  [[maybe_unused]] static constexpr std::uint32_t lanes = 2;  // unused with the other real
-  static Vector broadcast(double x) { return _mm_set1_pd(x); }
-  static Vector load(const double* p) { return _mm_loadu_pd(p); }
-  static Vector lessOrEqual(Vector a, Vector b) { return _mm_cmple_pd(a, b); }
-  static Vector both(Vector a, Vector b) { return _mm_and_pd(a, b); }
-  static int signs(Vector a) { return _mm_movemask_pd(a); }
-};
-template <>
-struct Sse<float> {
-  using Vector = __m128;
-  [[maybe_unused]] static constexpr std::uint32_t lanes = 4;  // unused with the other real
-  static Vector broadcast(float x) { return _mm_set1_ps(x); }
-  static Vector load(const float* p) { return _mm_loadu_ps(p); }
-  static Vector lessOrEqual(Vector a, Vector b) { return _mm_cmple_ps(a, b); }
-  static Vector both(Vector a, Vector b) { return _mm_and_ps(a, b); }
-  static int signs(Vector a) { return _mm_movemask_ps(a); }
-};
-#endif
 
 /// The moved boxes of at most 64 (one word of bits), in increasing index m, each with its row:
 /// one word, at `rows + m` (the few-box path).
@@ -104,139 +70,67 @@ class ManyMovedRows {
   std::uint64_t* row_;
 };
 
-// The kernels below: for each moved box m of @p rows (FewMovedRows or ManyMovedRows), bit
-// j % 64 of word j / 64 of its row set when box j of @p count overlaps box m of @p boxes, a word
-// of 64 boxes at a time (one, for few boxes: the compiler then keeps no loop over words).
-// (Cursors, not a function taking the kernels' loops: those are compiled for AVX, and GCC
-// inlines no such loop into a function that is not.)
+/// For each moved box m of @p rows (FewMovedRows or ManyMovedRows), bit j % 64 of word j / 64
+/// of its row set when box j of @p count overlaps box m of @p boxes: the same four comparisons
+/// as BoundingBox::overlaps (false with NaN), on the corners stored by coordinate, a register
+/// of boxes at a time (the padding of @p soa, 7 past count, makes the last register whole; its
+/// bits are garbage, masked by the caller). A word of 64 boxes at a time: one, for few boxes,
+/// so that the compiler keeps no loop over words.
+template <class W, class Rows>
+void overlapRowsOf(const BoundingBox* boxes, Rows rows, const BoxColumns& soa,
+                   std::uint32_t count) {
+  std::uint32_t m = 0;
+  std::uint64_t* row = nullptr;
+  while (rows.next(m, row)) {
+    const W boxLowerX = W::broadcast(boxes[m].lower.x);
+    const W boxUpperX = W::broadcast(boxes[m].upper.x);
+    const W boxLowerY = W::broadcast(boxes[m].lower.y);
+    const W boxUpperY = W::broadcast(boxes[m].upper.y);
+    for (std::uint32_t base = 0; Rows::oneWord || base < count; base += 64) {
+      const std::uint32_t end = Rows::oneWord ? count : std::min(count - base, 64u);
+      std::uint64_t word = 0;
+      for (std::uint32_t j = 0; j < end; j += W::lanes) {
+        const std::uint32_t at = base + j;
+        // (lower <= upper written upper >= lower where the lower is loaded: the load is then
+        // the comparison's operand.)
+        const auto hit = lessOrEqual(boxLowerX, W::load(soa.upperX + at)) &
+                         greaterOrEqual(boxUpperX, W::load(soa.lowerX + at)) &
+                         lessOrEqual(boxLowerY, W::load(soa.upperY + at)) &
+                         greaterOrEqual(boxUpperY, W::load(soa.lowerY + at));
+        word |= std::uint64_t{hit.bits()} << j;
+      }
+      row[base / 64] = word;
+      if constexpr (Rows::oneWord) break;
+    }
+  }
+}
 
-#if defined(__SSE2__)
-// A register of boxes per instruction (a comparison with NaN is false, as in C++).
+#if defined(THYRIX_SIMD_AVX2_DISPATCH)
+/// overlapRowsOf() in AVX2 registers, twice SSE2's boxes per comparison.
 template <class Rows>
-void overlapRowsSse(const BoundingBox* boxes, Rows rows, const BoxColumns& soa,
-                    std::uint32_t count) {
-  using S = Sse<real>;
-  std::uint32_t m = 0;
-  std::uint64_t* row = nullptr;
-  while (rows.next(m, row)) {
-    const auto boxLowerX = S::broadcast(boxes[m].lower.x);
-    const auto boxUpperX = S::broadcast(boxes[m].upper.x);
-    const auto boxLowerY = S::broadcast(boxes[m].lower.y);
-    const auto boxUpperY = S::broadcast(boxes[m].upper.y);
-    for (std::uint32_t base = 0; Rows::oneWord || base < count; base += 64) {  // (one: no test)
-      const std::uint32_t end = Rows::oneWord ? count : std::min(count - base, 64u);
-      std::uint64_t word = 0;
-      for (std::uint32_t j = 0; j < end; j += S::lanes) {
-        const std::uint32_t at = base + j;
-        auto hit = S::lessOrEqual(boxLowerX, S::load(soa.upperX + at));
-        hit = S::both(hit, S::lessOrEqual(S::load(soa.lowerX + at), boxUpperX));
-        hit = S::both(hit, S::lessOrEqual(boxLowerY, S::load(soa.upperY + at)));
-        hit = S::both(hit, S::lessOrEqual(S::load(soa.lowerY + at), boxUpperY));
-        word |= static_cast<std::uint64_t>(S::signs(hit)) << j;
-      }
-      row[base / 64] = word;
-      if constexpr (Rows::oneWord) break;
-    }
-  }
+THYRIX_SIMD_AVX2_KERNEL void overlapRowsAvx2(const BoundingBox* boxes, Rows rows,
+                                             const BoxColumns& soa, std::uint32_t count) {
+  overlapRowsOf<simd::Avx2<real>>(boxes, rows, soa, count);
+}
+
+/// overlapRowsOf() in AVX-512 registers, eight doubles per comparison (a crowd in motion
+/// spends half its step here). A template on the real type: a float build never instantiates it.
+template <class Real, class Rows>
+THYRIX_SIMD_AVX512_KERNEL void overlapRowsAvx512(const BoundingBox* boxes, Rows rows,
+                                                 const BoxColumns& soa, std::uint32_t count) {
+  overlapRowsOf<simd::Wide<Real, 8>>(boxes, rows, soa, count);
 }
 #endif
 
-#if defined(THYRIX_AVX_DISPATCH)
-// overlapRowsSse in double with AVX, four boxes per instruction, and with AVX-512, eight, their
-// four comparisons chained in a mask register. Comparisons only, ordered (false with NaN, as
-// in C++; a <= b written b >= a where b is loaded, so that the load is the comparison's
-// operand): the same bits. (Templates: a float build never instantiates them.)
-template <class Real, class Rows>
-[[gnu::target("avx")]] void overlapRowsAvx(const BoundingBox* boxes, Rows rows, const Real* lowerX,
-                                           const Real* upperX, const Real* lowerY,
-                                           const Real* upperY, std::uint32_t count) {
-  std::uint32_t m = 0;
-  std::uint64_t* row = nullptr;
-  while (rows.next(m, row)) {
-    const __m256d boxLowerX = _mm256_set1_pd(Real{boxes[m].lower.x});
-    const __m256d boxUpperX = _mm256_set1_pd(Real{boxes[m].upper.x});
-    const __m256d boxLowerY = _mm256_set1_pd(Real{boxes[m].lower.y});
-    const __m256d boxUpperY = _mm256_set1_pd(Real{boxes[m].upper.y});
-    for (std::uint32_t base = 0; Rows::oneWord || base < count; base += 64) {  // (one: no test)
-      const std::uint32_t end = Rows::oneWord ? count : std::min(count - base, 64u);
-      std::uint64_t word = 0;
-      for (std::uint32_t j = 0; j < end; j += 4) {
-        const std::uint32_t at = base + j;
-        __m256d hit = _mm256_cmp_pd(boxLowerX, _mm256_loadu_pd(upperX + at), _CMP_LE_OQ);
-        hit =
-            _mm256_and_pd(hit, _mm256_cmp_pd(boxUpperX, _mm256_loadu_pd(lowerX + at), _CMP_GE_OQ));
-        hit =
-            _mm256_and_pd(hit, _mm256_cmp_pd(boxLowerY, _mm256_loadu_pd(upperY + at), _CMP_LE_OQ));
-        hit =
-            _mm256_and_pd(hit, _mm256_cmp_pd(boxUpperY, _mm256_loadu_pd(lowerY + at), _CMP_GE_OQ));
-        word |= static_cast<std::uint64_t>(_mm256_movemask_pd(hit)) << j;
-      }
-      row[base / 64] = word;
-      if constexpr (Rows::oneWord) break;
-    }
-  }
-}
-
-template <class Real, class Rows>
-[[gnu::target("avx512f")]] void overlapRowsAvx512(const BoundingBox* boxes, Rows rows,
-                                                  const Real* lowerX, const Real* upperX,
-                                                  const Real* lowerY, const Real* upperY,
-                                                  std::uint32_t count) {
-  std::uint32_t m = 0;
-  std::uint64_t* row = nullptr;
-  while (rows.next(m, row)) {
-    const __m512d boxLowerX = _mm512_set1_pd(Real{boxes[m].lower.x});
-    const __m512d boxUpperX = _mm512_set1_pd(Real{boxes[m].upper.x});
-    const __m512d boxLowerY = _mm512_set1_pd(Real{boxes[m].lower.y});
-    const __m512d boxUpperY = _mm512_set1_pd(Real{boxes[m].upper.y});
-    for (std::uint32_t base = 0; Rows::oneWord || base < count; base += 64) {  // (one: no test)
-      const std::uint32_t end = Rows::oneWord ? count : std::min(count - base, 64u);
-      std::uint64_t word = 0;
-      for (std::uint32_t j = 0; j < end; j += 8) {
-        const std::uint32_t at = base + j;
-        __mmask8 hit = _mm512_cmp_pd_mask(boxLowerX, _mm512_loadu_pd(upperX + at), _CMP_LE_OQ);
-        hit = _mm512_mask_cmp_pd_mask(hit, boxUpperX, _mm512_loadu_pd(lowerX + at), _CMP_GE_OQ);
-        hit = _mm512_mask_cmp_pd_mask(hit, boxLowerY, _mm512_loadu_pd(upperY + at), _CMP_LE_OQ);
-        hit = _mm512_mask_cmp_pd_mask(hit, boxUpperY, _mm512_loadu_pd(lowerY + at), _CMP_GE_OQ);
-        word |= static_cast<std::uint64_t>(hit) << j;
-      }
-      row[base / 64] = word;
-      if constexpr (Rows::oneWord) break;
-    }
-  }
-}
-#endif
-
-/// The rows of the moved boxes of @p rows against the @p count boxes of @p soa: the same four
-/// comparisons as BoundingBox::overlaps, on the corners stored by coordinate, several boxes at
-/// a time where the processor allows (the padding of @p soa, 7 past count, makes the last
-/// vector whole; its bits are garbage, masked by the caller). All moved boxes in one call: one
-/// dispatch, and the vector code's entry and exit, a step.
+/// overlapRowsOf() in the widest registers the processor has.
 template <class Rows>
 void overlapRows(const BoundingBox* boxes, Rows rows, const BoxColumns& soa, std::uint32_t count) {
-#if defined(THYRIX_AVX_DISPATCH)
-  if constexpr (std::is_same_v<real, double>) {
-    if (processorHasAvx512())
-      return overlapRowsAvx512(boxes, rows, soa.lowerX, soa.upperX, soa.lowerY, soa.upperY, count);
-    if (processorHasAvx())
-      return overlapRowsAvx(boxes, rows, soa.lowerX, soa.upperX, soa.lowerY, soa.upperY, count);
-  }
+#if defined(THYRIX_SIMD_AVX2_DISPATCH)
+  if constexpr (sizeof(real) == 8)
+    if (processorHasAvx512()) return overlapRowsAvx512<real>(boxes, rows, soa, count);
+  if (processorHasAvx2()) return overlapRowsAvx2(boxes, rows, soa, count);
 #endif
-#if defined(__SSE2__)
-  overlapRowsSse(boxes, rows, soa, count);
-#else
-  std::uint32_t m = 0;
-  std::uint64_t* row = nullptr;
-  while (rows.next(m, row)) {
-    const BoundingBox& box = boxes[m];
-    for (std::uint32_t j = 0; j < count; ++j) {
-      const bool hit = (box.lower.x <= soa.upperX[j]) & (soa.lowerX[j] <= box.upper.x) &
-                       (box.lower.y <= soa.upperY[j]) & (soa.lowerY[j] <= box.upper.y);
-      if (j % 64 == 0) row[j / 64] = 0;
-      row[j / 64] |= std::uint64_t{hit} << (j % 64);
-    }
-  }
-#endif
+  overlapRowsOf<simd::Native<real>>(boxes, rows, soa, count);
 }
 
 /// Bits above @p i.

@@ -1,4 +1,5 @@
 #include <ThyrixLite/GaussSeidelSolver.h>
+#include <Tools/Wide.h>
 #include <Tools/Inlining.h>
 #include <Tools/ProcessorFeatures.h>
 
@@ -7,13 +8,6 @@
 #include <cstddef>
 #include <limits>
 #include <type_traits>
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-#if defined(THYRIX_AVX_DISPATCH)
-#include <immintrin.h>
-#endif
 
 // Unrolling a loop by two or four, where the compiler takes the request (GCC and Clang);
 // others (MSVC would warn about an unknown pragma) unroll as they see fit.
@@ -285,28 +279,16 @@ inline Vector2& at(Vector2* velocity, std::uint32_t offset) {
 /// The angular velocity in @p omega of the body at byte offset @p offset of the velocities.
 inline real& omegaAt(real* omega, std::uint32_t offset) { return omega[offset / sizeof(Vector2)]; }
 
-/// `scaledNormal . (vB - vA)`, the row's normal velocity times relaxation / A_kk. In double,
-/// with SSE2, the difference and the products each in one instruction (a sweep is bound by
-/// its instructions): the same operations on the same values, the x product added first, so
-/// the same bits as Vector2's dot(). @p scaledNormal is 16-byte aligned in double (a row's,
-/// see sweep()): its load is then the multiplication's operand. A template, so that a float
-/// build never instantiates it.
-template <class Real>
-inline Real scaledNormalVelocity(const Vector2& scaledNormal, const Vector2& vA,
+/// `scaledNormal . (vB - vA)`, the row's normal velocity times relaxation / A_kk: the
+/// difference and the products of x and y together (a sweep is bound by its instructions), the
+/// x product added first, so the same bits as Vector2's dot().
+inline real scaledNormalVelocity(const Vector2& scaledNormal, const Vector2& vA,
                                  const Vector2& vB) {
-#if defined(__SSE2__)
-  if constexpr (std::is_same_v<Real, double>) {
-    static_assert(std::is_standard_layout_v<Vector2> && sizeof(Vector2) == 2 * sizeof(Real),
-                  "SSE2 reads a Vector2 as its two coordinates, x first");
-    const auto load = [](const Vector2& v) {
-      return _mm_loadu_pd(reinterpret_cast<const Real*>(&v));
-    };
-    const __m128d normal = _mm_load_pd(reinterpret_cast<const Real*>(&scaledNormal));
-    const __m128d products = _mm_mul_pd(normal, _mm_sub_pd(load(vB), load(vA)));
-    return _mm_cvtsd_f64(_mm_add_sd(products, _mm_unpackhi_pd(products, products)));
-  }
-#endif
-  return dot(scaledNormal, vB - vA);
+  using Pair = simd::Wide<real, 2>;
+  static_assert(std::is_standard_layout_v<Vector2> && sizeof(Vector2) == 2 * sizeof(real),
+                "a Vector2 is read as its two coordinates, x first");
+  const Pair products = Pair::load(&scaledNormal.x) * (Pair::load(&vB.x) - Pair::load(&vA.x));
+  return products.at(0) + products.at(1);
 }
 
 /// Adds to @p velocity and @p omega (the island's) the change @p amount of row @p p's force,
@@ -340,9 +322,6 @@ inline void push(Vector2* velocity, real* omega, const Row& row, const Turning* 
 template <bool backward, bool turning, class Row, class Turning>
 THYRIX_ALWAYS_INLINE real sweepRows(std::size_t n, const Row* rows, const Turning* turns,
                                     Vector2* velocity, real* omega, real* forces, real* changes) {
-  static_assert(
-      sizeof(real) != 8 || (alignof(Row) % 16 == 0 && offsetof(Row, scaledNormal) % 16 == 0),
-      "scaledNormalVelocity() loads a row's scaled normal as an aligned pair");
   real squaredNorm = 0;
   // Four rows an iteration: a quarter of the loop overhead (the rows still go one after the
   // other; 25.3 to 24.7 instructions a row in AVX).
@@ -356,8 +335,7 @@ THYRIX_ALWAYS_INLINE real sweepRows(std::size_t n, const Row* rows, const Turnin
     const real force = forces[p];
     const real start = force + scaledTarget;
     // The normal velocity w times relaxation / A_kk, a force.
-    real scaledVelocity =
-        scaledNormalVelocity<real>(row.scaledNormal, at(velocity, a), at(velocity, b));
+    real scaledVelocity = scaledNormalVelocity(row.scaledNormal, at(velocity, a), at(velocity, b));
     if constexpr (turning)
       scaledVelocity +=
           turns[p].scaledArmB * omegaAt(omega, b) - turns[p].scaledArmA * omegaAt(omega, a);
@@ -419,50 +397,6 @@ template <bool turning, class Row, class Turning>
   conjugateRows<turning>(n, beta, rows, turns, velocity, omega, forces, direction, changes);
 }
 
-/// conjugateRows without turning, in double with AVX: what a row does apart from its bodies
-/// (its step, direction, clamp and force) four rows at a time, in one register each, then
-/// the four rows' pushes one after the other, in row order. Each row's values go through the
-/// same operations as in conjugateRows, and each body's velocity takes the rows' pushes in
-/// the same order: the same bits (about 20 instructions a row in the plain loop, 13 here).
-/// A template on the real type, so that a float build never instantiates the double code.
-template <class Real, class Row, class Turning>
-[[gnu::target("avx")]] void conjugateRowsPackedAvx(std::size_t n, Real beta, const Row* rows,
-                                                   const Turning* turns, Vector2* velocity,
-                                                   Real* omega, Real* forces, Real* direction,
-                                                   const Real* changes) {
-  std::size_t p = 0;
-  if constexpr (std::is_same_v<Real, double>) {
-    // push() for a row whose change is in both halves of @p amount: the same operations.
-    const auto pushRow = [velocity](const Row& row, __m128d amount) {
-      const auto coordinates = [](const Vector2& v) { return reinterpret_cast<const Real*>(&v); };
-      Real* const a = reinterpret_cast<Real*>(&at(velocity, row.a));
-      const __m128d byA = _mm_mul_pd(_mm_loadu_pd(coordinates(row.pushA)), amount);
-      const __m128d byB = _mm_mul_pd(_mm_loadu_pd(coordinates(row.pushB)), amount);
-      _mm_storeu_pd(a, _mm_sub_pd(_mm_loadu_pd(a), byA));
-      Real* const b = reinterpret_cast<Real*>(&at(velocity, row.b));
-      _mm_storeu_pd(b, _mm_add_pd(_mm_loadu_pd(b), byB));
-    };
-    const __m256d betas = _mm256_set1_pd(beta);
-    const __m256d signs = _mm256_set1_pd(-0.0);
-    for (; p + 4 <= n; p += 4) {
-      const __m256d step = _mm256_mul_pd(betas, _mm256_loadu_pd(direction + p));
-      _mm256_storeu_pd(direction + p, _mm256_add_pd(step, _mm256_loadu_pd(changes + p)));
-      const __m256d force = _mm256_loadu_pd(forces + p);
-      // max(step, -f) as conjugateRows writes it: -f where step < -f, else step (NaN too).
-      const __m256d change = _mm256_max_pd(_mm256_xor_pd(force, signs), step);
-      _mm256_storeu_pd(forces + p, _mm256_add_pd(force, change));
-      // Each row's change in both halves of a register: rows 0 and 2, then 1 and 3.
-      const __m256d evens = _mm256_unpacklo_pd(change, change);
-      const __m256d odds = _mm256_unpackhi_pd(change, change);
-      pushRow(rows[p], _mm256_castpd256_pd128(evens));
-      pushRow(rows[p + 1], _mm256_castpd256_pd128(odds));
-      pushRow(rows[p + 2], _mm256_extractf128_pd(evens, 1));
-      pushRow(rows[p + 3], _mm256_extractf128_pd(odds, 1));
-    }
-  }
-  conjugateRows<false>(n - p, beta, rows + p, turns, velocity, omega, forces + p, direction + p,
-                       changes + p);
-}
 #endif
 
 }  // namespace
@@ -484,15 +418,8 @@ template <bool turning>
 void GaussSeidelSolver::conjugateStep(real beta) {
 #if defined(THYRIX_AVX_DISPATCH)
   if (processorHasAvx()) {
-    if constexpr (!turning) {
-      conjugateRowsPackedAvx<real>(rows_.size(), beta, rows_.data(), turning_.data(),
-                                   velocities_.data(), omegas_.data(), forces_.data(),
-                                   direction_.data(), changes_.data());
-    } else {
-      conjugateRowsAvx<turning>(rows_.size(), beta, rows_.data(), turning_.data(),
-                                velocities_.data(), omegas_.data(), forces_.data(),
-                                direction_.data(), changes_.data());
-    }
+    conjugateRowsAvx<turning>(rows_.size(), beta, rows_.data(), turning_.data(), velocities_.data(),
+                              omegas_.data(), forces_.data(), direction_.data(), changes_.data());
     return;
   }
 #endif

@@ -2,6 +2,7 @@
 /// @brief Phase 2 of a step, first part: the shapes' geometry and grid boxes (what moved).
 #include <ThyrixLite/Border.h>
 #include <ThyrixLite/Simulator.h>
+#include <Tools/Wide.h>
 #include <Tools/Inlining.h>
 #include <Tools/ProcessorFeatures.h>
 
@@ -12,13 +13,6 @@
 #include <cstddef>
 #include <cstring>
 #include <type_traits>
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-#if defined(THYRIX_AVX_DISPATCH)
-#include <immintrin.h>
-#endif
 
 namespace thyrix {
 
@@ -42,185 +36,101 @@ void setBits(std::uint64_t* words, std::uint32_t begin, std::uint32_t end) {
   }
 }
 
-/// Widens the box (@p boxMin, @p boxMax) to take in the box (@p lower, @p upper), coordinate
-/// by coordinate (a body's box is this union of its shapes' boxes, in shape order).
-void include(Vector2& boxMin, Vector2& boxMax, Vector2 lower, Vector2 upper) {
-  boxMin = {std::min(boxMin.x, lower.x), std::min(boxMin.y, lower.y)};
-  boxMax = {std::max(boxMax.x, upper.x), std::max(boxMax.y, upper.y)};
-}
-
-#if defined(__SSE2__)
-// A Vector2 as the pair of doubles it holds (x first: the address of a standard-layout struct
-// is its first member's). Templates, so that a float build never instantiates them.
+/// Two reals as one value: a 2D vector's x and y, each step of the geometry for both at once
+/// (a crowd's circles and a chain's capsules at every step).
+using Pair = simd::Wide<real, 2>;
 static_assert(std::is_standard_layout_v<Vector2> && sizeof(Vector2) == 2 * sizeof(real),
-              "SSE2 reads a Vector2 as its two coordinates");
-template <class Real>
-__m128d loadPair(const Vector2& v) {
-  return _mm_loadu_pd(reinterpret_cast<const Real*>(&v));
+              "a Vector2 is read as its two coordinates");
+Pair load(const Vector2& v) { return Pair::load(&v.x); }
+void store(Vector2& v, Pair pair) { pair.store(&v.x); }
+
+/// Widens the box (@p boxMin, @p boxMax) to take in the box from @p least - @p radius to
+/// @p most + @p radius, coordinate by coordinate (a body's box is this union of its shapes'
+/// boxes, in shape order): std::min(a, b) is `b < a ? b : a`, simd::min(b, a).
+void includeWidened(Vector2& boxMin, Vector2& boxMax, Pair least, Pair most, real radius) {
+  const Pair round = Pair::broadcast(radius);
+  store(boxMin, min(least - round, load(boxMin)));
+  store(boxMax, max(most + round, load(boxMax)));
 }
-template <class Real>
-void storePair(Vector2& v, __m128d pair) {
-  _mm_storeu_pd(reinterpret_cast<Real*>(&v), pair);
-}
-/// include() of the box from @p least - @p radius to @p most + @p radius, x and y in one
-/// instruction each: the same operations, so the same bits (std::min(a, b) is MINPD(b, a)).
-template <class Real>
-void includeWidened(Vector2& boxMin, Vector2& boxMax, __m128d least, __m128d most, Real radius) {
-  const __m128d round = _mm_set1_pd(radius);
-  storePair<Real>(boxMin, _mm_min_pd(_mm_sub_pd(least, round), loadPair<Real>(boxMin)));
-  storePair<Real>(boxMax, _mm_max_pd(_mm_add_pd(most, round), loadPair<Real>(boxMax)));
-}
-#endif
 
 /// Widens the box (@p boxMin, @p boxMax) by the box of the capsule of ends @p p0 and @p p1 and
-/// radius @p radius. In double, with SSE2, as capsuleGeometry does it (updateComposedBody then
-/// keeps the box in registers: mixed with scalar updates, it was kept in memory).
-template <class Real>
-inline void includeCapsuleBox(const Vector2& p0, const Vector2& p1, Real radius, Vector2& boxMin,
+/// radius @p radius, as capsuleGeometry does it.
+inline void includeCapsuleBox(const Vector2& p0, const Vector2& p1, real radius, Vector2& boxMin,
                               Vector2& boxMax) {
-#if defined(__SSE2__)
-  if constexpr (std::is_same_v<Real, double>) {
-    const __m128d end0 = loadPair<Real>(p0);
-    const __m128d end1 = loadPair<Real>(p1);
-    includeWidened<Real>(boxMin, boxMax, _mm_min_pd(end1, end0), _mm_max_pd(end1, end0), radius);
-    return;
-  }
-#endif
-  const Vector2 round{radius, radius};
-  include(boxMin, boxMax, Vector2{std::min(p0.x, p1.x), std::min(p0.y, p1.y)} - round,
-          Vector2{std::max(p0.x, p1.x), std::max(p0.y, p1.y)} + round);
+  const Pair end0 = load(p0);
+  const Pair end1 = load(p1);
+  includeWidened(boxMin, boxMax, min(end1, end0), max(end1, end0), radius);
 }
 
 /// Adds @p box to @p extents, the next grid box in slot order, as BroadPhase gathers them
-/// (Extents::add; in double, with SSE2, its x and y in one instruction, as gatherExtents does
-/// it): the same operations in the same order, so the same sums.
-template <class Real>
+/// (Extents::add): the same operations in the same order, so the same sums. Each pair of
+/// fields is read and written at once (a chain's links add theirs one after the other).
 inline void addExtents(const BoundingBox& box, SweepAndPrune::Extents& extents) {
-#if defined(__SSE2__)
-  if constexpr (std::is_same_v<Real, double>) {
-    using Extents = SweepAndPrune::Extents;
-    static_assert(offsetof(Extents, sumY) == offsetof(Extents, sumX) + sizeof(Real) &&
-                      offsetof(Extents, lowY) == offsetof(Extents, lowX) + sizeof(Real) &&
-                      offsetof(Extents, highY) == offsetof(Extents, highX) + sizeof(Real),
-                  "the extents are read as pairs (x, y)");
-    Real* const sums = &extents.sumX;
-    Real* const low = &extents.lowX;
-    Real* const high = &extents.highX;
-    const __m128d lower = loadPair<Real>(box.lower);
-    const __m128d upper = loadPair<Real>(box.upper);
-    _mm_storeu_pd(sums, _mm_add_pd(_mm_loadu_pd(sums), _mm_sub_pd(upper, lower)));
-    _mm_storeu_pd(low, _mm_min_pd(lower, _mm_loadu_pd(low)));
-    _mm_storeu_pd(high, _mm_max_pd(upper, _mm_loadu_pd(high)));
-    return;
-  }
-#endif
-  extents.add(box);
+  using Extents = SweepAndPrune::Extents;
+  static_assert(std::is_standard_layout_v<Extents> &&
+                    offsetof(Extents, sumY) == offsetof(Extents, sumX) + sizeof(real) &&
+                    offsetof(Extents, lowY) == offsetof(Extents, lowX) + sizeof(real) &&
+                    offsetof(Extents, highY) == offsetof(Extents, highX) + sizeof(real),
+                "the extents are read as pairs (x, y)");
+  const Pair lower = load(box.lower);
+  const Pair upper = load(box.upper);
+  (Pair::load(&extents.sumX) + (upper - lower)).store(&extents.sumX);
+  min(lower, Pair::load(&extents.lowX)).store(&extents.lowX);
+  max(upper, Pair::load(&extents.highX)).store(&extents.highX);
 }
 
 /// A capsule's geometry from its centre @p r and half axis @p axis, exactly as
 /// Simulator::updateShape computes it: its ends @p p0 and @p p1 and its @p travel (from the
 /// ends' last values when @p known), its grid box @p gridBox (widened by @p radius, @p margin
 /// and the travel), and its box widened by the radius taken into the body box (@p boxMin,
-/// @p boxMax). In double, with SSE2, the x and y of each step in one instruction (a chain's
-/// 1000 capsules in every step): the same operations in the same order on the same values, so
-/// the same bits (std::min(a, b) is `b < a ? b : a`, which is MINPD(b, a); std::max(a, b) is
-/// MAXPD(b, a)).
-template <class Real>
-inline void capsuleGeometry(Vector2 r, Vector2 axis, Vector2& p0, Vector2& p1, Real radius,
-                            Real margin, Real& travel, Real travelFactor, bool known,
+/// @p boxMax).
+inline void capsuleGeometry(Vector2 r, Vector2 axis, Vector2& p0, Vector2& p1, real radius,
+                            real margin, real& travel, real travelFactor, bool known,
                             BoundingBox& gridBox, Vector2& boxMin, Vector2& boxMax) {
-#if defined(__SSE2__)
-  if constexpr (std::is_same_v<Real, double>) {
-    const __m128d centre = loadPair<Real>(r);
-    const __m128d half = loadPair<Real>(axis);
-    const __m128d last0 = loadPair<Real>(p0);
-    const __m128d last1 = loadPair<Real>(p1);
-    const __m128d end0 = _mm_sub_pd(centre, half);
-    const __m128d end1 = _mm_add_pd(centre, half);
-    storePair<Real>(p0, end0);
-    storePair<Real>(p1, end1);
-    const __m128d least = _mm_min_pd(end1, end0);
-    const __m128d most = _mm_max_pd(end1, end0);
-    includeWidened<Real>(boxMin, boxMax, least, most, radius);
-    Real moved = 0;
-    if (known) {
-      const __m128d noSign = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffff));
-      const __m128d d0 = _mm_and_pd(_mm_sub_pd(end0, last0), noSign);
-      const __m128d d1 = _mm_and_pd(_mm_sub_pd(end1, last1), noSign);
-      // (|d0.x| + |d0.y|, |d1.x| + |d1.y|)
-      const __m128d sums = _mm_add_pd(_mm_unpacklo_pd(d0, d1), _mm_unpackhi_pd(d0, d1));
-      const Real displacement =
-          std::max(_mm_cvtsd_f64(sums), _mm_cvtsd_f64(_mm_unpackhi_pd(sums, sums)));
-      moved = std::min(travelFactor * displacement, radius);
-    }
-    travel = moved;
-    const __m128d reach = _mm_set1_pd(radius + margin + moved);
-    storePair<Real>(gridBox.lower, _mm_sub_pd(least, reach));
-    storePair<Real>(gridBox.upper, _mm_add_pd(most, reach));
-    return;
-  }
-#endif
-  const Vector2 last0 = p0;
-  const Vector2 last1 = p1;
-  p0 = r - axis;
-  p1 = r + axis;
-  const Vector2 least{std::min(p0.x, p1.x), std::min(p0.y, p1.y)};
-  const Vector2 most{std::max(p0.x, p1.x), std::max(p0.y, p1.y)};
-  include(boxMin, boxMax, least - Vector2{radius, radius}, most + Vector2{radius, radius});
-  travel = 0;
+  const Pair centre = load(r);
+  const Pair half = load(axis);
+  const Pair last0 = load(p0);
+  const Pair last1 = load(p1);
+  const Pair end0 = centre - half;
+  const Pair end1 = centre + half;
+  store(p0, end0);
+  store(p1, end1);
+  const Pair least = min(end1, end0);
+  const Pair most = max(end1, end0);
+  includeWidened(boxMin, boxMax, least, most, radius);
+  real moved = 0;
   if (known) {
-    const Vector2 d0 = p0 - last0;
-    const Vector2 d1 = p1 - last1;
-    const Real displacement =
-        std::max(std::abs(d0.x) + std::abs(d0.y), std::abs(d1.x) + std::abs(d1.y));
-    travel = std::min(travelFactor * displacement, radius);
+    const Pair d0 = abs(end0 - last0);
+    const Pair d1 = abs(end1 - last1);
+    const Pair sums = simd::lows(d0, d1) + simd::highs(d0, d1);  // |d.x| + |d.y| of each end
+    moved = std::min(travelFactor * std::max(sums.at(0), sums.at(1)), radius);
   }
-  const Real widening = radius + margin + travel;
-  const Vector2 reach{widening, widening};
-  gridBox = {least - reach, most + reach};
+  travel = moved;
+  const Pair reach = Pair::broadcast(radius + margin + moved);
+  store(gridBox.lower, least - reach);
+  store(gridBox.upper, most + reach);
 }
 
 /// A circle's geometry at centre @p r, exactly as Simulator::updateCircle computes it: its
 /// axis @p p0, @p p1 (the centre twice), its travel from the centre's last value (@p p0) when
 /// @p known, returned, its grid box @p gridBox (widened by @p radius, @p margin and the travel),
-/// and its box taken into the body box (@p boxMin, @p boxMax). In double, with SSE2, the x and
-/// y of each step in one instruction (a crowd's circles in motion at every step): the same
-/// operations in the same order on the same values, so the same bits (see capsuleGeometry).
-template <class Real>
-inline Real circleGeometry(Vector2 r, Vector2& p0, Vector2& p1, Real radius, Real margin,
-                           Real travelFactor, bool known, BoundingBox& gridBox, Vector2& boxMin,
+/// and its box taken into the body box (@p boxMin, @p boxMax).
+inline real circleGeometry(Vector2 r, Vector2& p0, Vector2& p1, real radius, real margin,
+                           real travelFactor, bool known, BoundingBox& gridBox, Vector2& boxMin,
                            Vector2& boxMax) {
-#if defined(__SSE2__)
-  if constexpr (std::is_same_v<Real, double>) {
-    const __m128d centre = loadPair<Real>(r);
-    const __m128d last = loadPair<Real>(p0);
-    storePair<Real>(p0, centre);
-    storePair<Real>(p1, centre);
-    includeWidened<Real>(boxMin, boxMax, centre, centre, radius);
-    Real travel = 0;
-    if (known) {
-      const __m128d noSign = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffff));
-      const __m128d d = _mm_and_pd(_mm_sub_pd(centre, last), noSign);  // |dx|, |dy|
-      travel = std::min(travelFactor * _mm_cvtsd_f64(_mm_add_sd(d, _mm_unpackhi_pd(d, d))), radius);
-    }
-    const __m128d reach = _mm_set1_pd(radius + margin + travel);
-    storePair<Real>(gridBox.lower, _mm_sub_pd(centre, reach));
-    storePair<Real>(gridBox.upper, _mm_add_pd(centre, reach));
-    return travel;
-  }
-#endif
-  const Vector2 last = p0;
-  p0 = r;
-  p1 = r;
-  include(boxMin, boxMax, r - Vector2{radius, radius}, r + Vector2{radius, radius});
-  Real travel = 0;
+  const Pair centre = load(r);
+  const Pair last = load(p0);
+  store(p0, centre);
+  store(p1, centre);
+  includeWidened(boxMin, boxMax, centre, centre, radius);
+  real travel = 0;
   if (known) {
-    const Vector2 d = r - last;
-    travel = std::min(travelFactor * (std::abs(d.x) + std::abs(d.y)), radius);
+    const Pair d = abs(centre - last);
+    travel = std::min(travelFactor * (d.at(0) + d.at(1)), radius);
   }
-  const Real widening = radius + margin + travel;
-  const Vector2 reach{widening, widening};
-  gridBox = {r - reach, r + reach};
+  const Pair reach = Pair::broadcast(radius + margin + travel);
+  store(gridBox.lower, centre - reach);
+  store(gridBox.upper, centre + reach);
   return travel;
 }
 
@@ -302,7 +212,7 @@ inline void Simulator::addCachedBox(std::uint32_t s, Vector2& boxMin, Vector2& b
 
 inline void Simulator::addGeometryBox(const ShapeGeometry& g, Vector2& boxMin, Vector2& boxMax) {
   // A circle's axis is its centre twice (see updateShape): the capsule's box is its box.
-  includeCapsuleBox<real>(g.p0, g.p1, g.radius, boxMin, boxMax);
+  includeCapsuleBox(g.p0, g.p1, g.radius, boxMin, boxMax);
 }
 
 // THYRIX_ALWAYS_INLINE below where GCC kept a call (measured), THYRIX_NO_INLINE on a loop.
@@ -345,8 +255,8 @@ THYRIX_ALWAYS_INLINE void Simulator::placeLinkCapsule(Vector2 r, real alpha, Vec
                                                       Vector2& boxMax) {
   pose.r = r;
   pose.alpha = alpha;
-  capsuleGeometry<real>(r, axis, g.p0, g.p1, g.radius, g.margin, g.travel, travelFactor, poseKnown,
-                        gridBox, boxMin, boxMax);
+  capsuleGeometry(r, axis, g.p0, g.p1, g.radius, g.margin, g.travel, travelFactor, poseKnown,
+                  gridBox, boxMin, boxMax);
 }
 
 // A circle: its geometry does not depend on its angle. Its axis is its centre twice, so that
@@ -362,8 +272,8 @@ THYRIX_ALWAYS_INLINE real Simulator::updateCircle(std::uint32_t s, Vector2 r, bo
   // keeps its speed: |dx| + |dy| (no square root; at most 1.42 times the distance), capped
   // at the radius (a shape moved by hand did not travel). Its grid box is its own box (not
   // the body's), widened by its speculative margin and travel.
-  const real travel = circleGeometry<real>(r, g.p0, g.p1, g.radius, g.margin, geometryTravel_,
-                                           poseKnown, gridBoxes_[slot], boxMin, boxMax);
+  const real travel = circleGeometry(r, g.p0, g.p1, g.radius, g.margin, geometryTravel_, poseKnown,
+                                     gridBoxes_[slot], boxMin, boxMax);
   g.travel = travel;
   return travel;
 }
@@ -567,7 +477,7 @@ THYRIX_NO_INLINE void Simulator::updateComposedBody(const BodyState& state, bool
       }
       placeLinkCapsule(r, alpha, axis, pose, g, poseKnown, grid.travelFactor, gridBox, boxMin,
                        boxMax);
-      addExtents<real>(gridBox, extents);
+      addExtents(gridBox, extents);
       return true;
     };
     // A circle or capsule without sensors that did not move: its box as cached.
@@ -643,7 +553,7 @@ THYRIX_NO_INLINE void Simulator::gatherExtentsUpTo(std::uint32_t slot) {
   // reaches it: they are its body's earlier shapes, or shapes of bodies of lower index, done
   // before it or not moved (or circles, done in updateGeometry's first loop).
   for (; gridExtentsCount_ < slot; ++gridExtentsCount_)
-    addExtents<real>(gridBoxes_[gridExtentsCount_], gridExtents_);
+    addExtents(gridBoxes_[gridExtentsCount_], gridExtents_);
 }
 
 void Simulator::updateGeometry() {
@@ -742,68 +652,13 @@ void Simulator::updateGeometry() {
       visit(state, pose, flags, listingConstant);
     }
   };
-#if defined(THYRIX_AVX_DISPATCH)
-  // With AVX the pose in one comparison: x, y and the angle, and the 8 bytes after them,
-  // ignored (the body's direction cache, the state's filters), read as four lanes. (In double
-  // only: a float build instantiates it empty, and never calls it.)
-  const auto checkAvx = [&](auto realConstant, auto listingConstant)
-      __attribute__((target("avx"))) {
-    using Real = decltype(realConstant);
-    if constexpr (std::is_same_v<Real, double>) {
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Winvalid-offsetof"
-      static_assert(
-          offsetof(PhysicalObject, alpha) == offsetof(PhysicalObject, r) + 2 * sizeof(Real) &&
-              offsetof(PhysicalObject, r) + 4 * sizeof(Real) <= sizeof(PhysicalObject) &&
-              offsetof(BodyState, alpha) == offsetof(BodyState, r) + 2 * sizeof(Real) &&
-              offsetof(BodyState, r) + 4 * sizeof(Real) <= sizeof(BodyState),
-          "a pose is read as the first three of four lanes");
-      static_assert(
-          offsetof(PhysicalObject, omega) == offsetof(PhysicalObject, v) + 2 * sizeof(Real) &&
-              offsetof(PhysicalObject, externalTorque) ==
-                  offsetof(PhysicalObject, externalForce) + 2 * sizeof(Real) &&
-              offsetof(PhysicalObject, externalForce) + 4 * sizeof(Real) <= sizeof(PhysicalObject),
-          "the velocities and the accumulators are read as the first three of four lanes");
-#pragma GCC diagnostic pop
-      const __m256i poseLanes = _mm256_set_epi64x(0, -1, -1, -1);
-      for (BodyState& state : states) {
-        const PhysicalObject& body = *state.object;
-        const __m256d difference =
-            _mm256_xor_pd(_mm256_loadu_pd(static_cast<const Real*>(&body.r.x)),
-                          _mm256_loadu_pd(static_cast<const Real*>(&state.r.x)));
-        // (The motion too, when listing: the velocities' and the accumulators' bits or'ed in.)
-        __m256d compared = difference;
-        if constexpr (decltype(listingConstant)::value)
-          compared = _mm256_or_pd(
-              compared,
-              _mm256_or_pd(_mm256_loadu_pd(static_cast<const Real*>(&body.v.x)),
-                           _mm256_loadu_pd(static_cast<const Real*>(&body.externalForce.x))));
-        const std::uint64_t flags = flagDifference(body, state);
-        if (_mm256_testz_si256(_mm256_castpd_si256(compared), poseLanes) != 0 && flags == 0)
-            [[likely]]
-          continue;
-        visit(state, poseDifference(body, state), flags, listingConstant);
-      }
-    }
-  };
-#endif
   // (Everything recomputed: no rest, nothing listed.)
-  if (everything) {
+  if (everything)
     check(std::true_type{}, std::false_type{});
-  } else {
-    bool checked = false;
-#if defined(THYRIX_AVX_DISPATCH)
-    if (std::is_same_v<real, double> && processorHasAvx()) {
-      if (listing)
-        checkAvx(real{}, std::true_type{});
-      else
-        checkAvx(real{}, std::false_type{});
-      checked = true;
-    }
-#endif
-    if (!checked && listing) check(std::false_type{}, std::true_type{});
-    if (!checked && !listing) check(std::false_type{}, std::false_type{});
-  }
+  else if (listing)
+    check(std::false_type{}, std::true_type{});
+  else
+    check(std::false_type{}, std::false_type{});
   // The bodies that changed, or whose several shapes are compared one by one, in their own
   // loop: the one above, run for every body at every step, then keeps everything in
   // registers (measured: one loop spilled and took 45 instructions a body at rest, not 29).

@@ -1,6 +1,7 @@
 #include <ThyrixLite/GUI.h>
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixLite/Simulator.h>
+#include <Tools/Wide.h>
 #include <ThyrixPro/ArticulatedAgentBase.h>
 
 #include <algorithm>
@@ -9,9 +10,6 @@
 #include <string>
 #include <type_traits>
 #include <utility>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace thyrix {
 
@@ -275,30 +273,19 @@ void ArticulatedAgentBase::clearServo(int i) {
 namespace {
 
 /// Adds (@p torque, @p forceOf(k)) to the wrench k of the @p count wrenches from @p wrenches
-/// on. In double, each wrench's force as one SSE2 pair: the same additions. (GCC vectorizes
-/// the plain loop across neighbouring wrenches, 24 bytes each, whose 16-byte loads then
-/// straddle the last stores: a store-forwarding stall per link, slower than a call
-/// per link.) A template, so that a float build never instantiates the pairs.
-template <class Real, class ForceOf>
-void addToEachWrench(Vector3* wrenches, std::size_t count, Real torque, ForceOf forceOf) {
-#if defined(__SSE2__)
-  if constexpr (std::is_same_v<Real, double>) {
-    static_assert(std::is_standard_layout_v<Vector3> && sizeof(Vector3) == 3 * sizeof(Real),
-                  "a wrench is read as its three coordinates");
-    for (std::size_t k = 0; k < count; ++k) {
-      auto* const w = reinterpret_cast<Real*>(&wrenches[k]);
-      w[0] += torque;
-      const Vector2 force = forceOf(k);
-      _mm_storeu_pd(w + 1, _mm_add_pd(_mm_loadu_pd(w + 1), _mm_set_pd(force.y, force.x)));
-    }
-    return;
-  }
-#endif
+/// on, each wrench's force as one pair: the same additions. (GCC vectorizes the plain loop
+/// across neighbouring wrenches, 24 bytes each, whose 16-byte loads then straddle the last
+/// stores: a store-forwarding stall per link, slower than a call per link.)
+template <class ForceOf>
+void addToEachWrench(Vector3* wrenches, std::size_t count, real torque, ForceOf forceOf) {
+  using Pair = simd::Wide<real, 2>;
+  static_assert(std::is_standard_layout_v<Vector3> && sizeof(Vector3) == 3 * sizeof(real),
+                "a wrench is read as its three coordinates");
   for (std::size_t k = 0; k < count; ++k) {
+    auto* const w = reinterpret_cast<real*>(&wrenches[k]);
+    w[0] += torque;
     const Vector2 force = forceOf(k);
-    wrenches[k].x += torque;
-    wrenches[k].y += force.x;
-    wrenches[k].z += force.y;
+    (Pair::load(w + 1) + simd::pair(force.x, force.y)).store(w + 1);
   }
 }
 
@@ -309,8 +296,8 @@ void ArticulatedAgentBase::applyForceAtEveryLinkCenterOfMass(Vector2 force) {
     refuseLinkForce(base, force, Vector2{});
   touchLinkWrenches();
   // The torque, the same for every link, as applyLinkForceAtCenterOfMass() computes it.
-  addToEachWrench<real>(linkWrenches_.data() + 1, linkWrenches_.size() - 1, cross(Vector2{}, force),
-                        [force](std::size_t) { return force; });
+  addToEachWrench(linkWrenches_.data() + 1, linkWrenches_.size() - 1, cross(Vector2{}, force),
+                  [force](std::size_t) { return force; });
 }
 
 void ArticulatedAgentBase::applyWeight(Vector2 gravity) {
@@ -323,7 +310,7 @@ void ArticulatedAgentBase::applyWeight(Vector2 gravity) {
     return [masses, gravity](std::size_t k) { return masses[k] * gravity; };
   };
   if (!fixed)  // a fixed base weighs nothing
-    addToEachWrench<real>(linkWrenches_.data(), 1, torque, weightsOf(bodyMasses_.data()));
+    addToEachWrench(linkWrenches_.data(), 1, torque, weightsOf(bodyMasses_.data()));
   const std::size_t links = linkWrenches_.size() - 1;
   if (linksWeighAlike_) {  // one weight for all (a uniform chain), without a multiplication each
     const Vector2 weight = bodyMasses_[1] * gravity;
@@ -331,17 +318,16 @@ void ArticulatedAgentBase::applyWeight(Vector2 gravity) {
     if (linkWrenchesClear_ && !linkWeightKept_) {
       // Every link's wrench is zero: keep the one they would all become.
       Vector3 wrench{};
-      addToEachWrench<real>(&wrench, 1, torque, theWeight);
+      addToEachWrench(&wrench, 1, torque, theWeight);
       linkWeight_ = wrench;
       linkWeightKept_ = true;
       return;
     }
     touchLinkWrenches();
-    addToEachWrench<real>(linkWrenches_.data() + 1, links, torque, theWeight);
+    addToEachWrench(linkWrenches_.data() + 1, links, torque, theWeight);
   } else {
     touchLinkWrenches();
-    addToEachWrench<real>(linkWrenches_.data() + 1, links, torque,
-                          weightsOf(bodyMasses_.data() + 1));
+    addToEachWrench(linkWrenches_.data() + 1, links, torque, weightsOf(bodyMasses_.data() + 1));
   }
 }
 

@@ -8,6 +8,7 @@
 #include <ThyrixLite/ThyrixParameters.h>
 #include <ThyrixLite/Vector2.h>
 #include <ThyrixLite/Vector3.h>
+#include <Tools/Wide.h>
 #include <ThyrixPro/ArticulatedLink.h>
 
 #include <bit>
@@ -16,10 +17,6 @@
 #include <span>
 #include <type_traits>
 #include <vector>
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace thyrix {
 
@@ -323,7 +320,8 @@ class ArticulatedBody {
     origin_[0] = basePosition_;
     comOffset_[0] = {};
     if constexpr (plainChain) {
-      if (plainChainLinkOrigins<real>(eachLink)) return;
+      plainChainLinkOrigins(eachLink);
+      return;
     }
     Vector2 parentOrigin = basePosition_;
     Vector2 parentAxis = axis_[0];
@@ -346,61 +344,46 @@ class ArticulatedBody {
       eachLink(i, parentOrigin + offset, angle_[i + 1], parentAxis);
     }
   }
-  /// linkOrigins<true>()'s loop (a plain chain), in SSE2 pairs with the same bits; returns
-  /// true, or false having done nothing without SSE2 or for a real type other than double (a
-  /// template, so that a float build never instantiates the pairs).
-  template <class Real, class EachLink>
-  bool plainChainLinkOrigins(EachLink& eachLink) {
-#if defined(__SSE2__)
-    if constexpr (std::is_same_v<Real, double>) {
-      // Each rotation as rotated() computes it, its two coordinates at once: (a.x, a.y) v.x
-      // plus (-a.y, a.x) v.y, where a.x v.x + (-a.y) v.y has the bits of a.x v.x - a.y v.y (a
-      // product with a negated factor is the negated product, and x + (-y) is x - y). The
-      // turned axis (-a.y, a.x) serves the link's centre of mass and its child's joint. Left to
-      // itself, GCC combines each rotation's products with a subtraction, an addition and a
-      // blend.
-      static_assert(std::is_standard_layout_v<Vector2> && sizeof(Vector2) == 2 * sizeof(Real),
-                    "vectors are read and written as their coordinates");
-      const auto pairOf = [](const Vector2& v) {
-        return _mm_loadu_pd(reinterpret_cast<const Real*>(&v));
-      };
-      // Stored as a whole Vector2 (std::bit_cast), not through a double*: an SSE2 store may
-      // alias anything, and GCC then reads the caller's fields again at every link. (A generic
-      // lambda: a float build never checks the cast of 16 bytes to its 8-byte Vector2.)
-      const auto vectorOf = [](auto pair) { return std::bit_cast<Vector2>(pair); };
-      const auto store = [&](Vector2& v, __m128d pair) { v = vectorOf(pair); };
-      const __m128d negateLow = _mm_set_pd(0.0, -0.0);
-      const auto turned = [&](__m128d a) { return _mm_xor_pd(_mm_shuffle_pd(a, a, 1), negateLow); };
-      const auto turn = [](__m128d a, __m128d aTurned, __m128d v) {
-        return _mm_add_pd(_mm_mul_pd(a, _mm_unpacklo_pd(v, v)),
-                          _mm_mul_pd(aTurned, _mm_unpackhi_pd(v, v)));
-      };
-      const LinkPlacement* const placements = placements_.data();
-      const Vector2* const axes = axis_.data() + 1;  // link i's at i, as below
-      const real* const angles = angle_.data() + 1;
-      Vector2* const origins = origin_.data() + 1;
-      Vector2* const offsets = comOffset_.data() + 1;
-      Vector2* const shifts = shift_.data();
-      __m128d parentOrigin = pairOf(basePosition_);
-      __m128d parentAxis = pairOf(axis_[0]);
-      __m128d parentTurned = turned(parentAxis);
-      const std::size_t n = links_.size();
-      for (std::size_t i = 0; i < n; ++i) {
-        const __m128d shift = turn(parentAxis, parentTurned, pairOf(placements[i].jointPosition));
-        store(shifts[i], shift);
-        parentOrigin = _mm_add_pd(parentOrigin, shift);
-        store(origins[i], parentOrigin);
-        parentAxis = pairOf(axes[i]);
-        parentTurned = turned(parentAxis);
-        const __m128d offset = turn(parentAxis, parentTurned, pairOf(placements[i].centerOfMass));
-        store(offsets[i], offset);
-        eachLink(i, vectorOf(_mm_add_pd(parentOrigin, offset)), angles[i], vectorOf(parentAxis));
-      }
-      return true;
+  /// linkOrigins<true>()'s loop (a plain chain), each vector's two coordinates at once. Each
+  /// rotation as rotated() computes it: (a.x, a.y) v.x plus (-a.y, a.x) v.y, where
+  /// a.x v.x + (-a.y) v.y has the bits of a.x v.x - a.y v.y (a product with a negated factor
+  /// is the negated product, and x + (-y) is x - y). The turned axis (-a.y, a.x) serves the
+  /// link's centre of mass and its child's joint.
+  template <class EachLink>
+  void plainChainLinkOrigins(EachLink& eachLink) {
+    using Pair = simd::Wide<real, 2>;
+    static_assert(std::is_standard_layout_v<Vector2> && sizeof(Vector2) == sizeof(Pair),
+                  "vectors are read and written as their coordinates");
+    const auto pairOf = [](const Vector2& v) { return Pair::load(&v.x); };
+    // Stored as a whole Vector2 (std::bit_cast), not through a real*: a vector store may alias
+    // anything, and GCC then reads the caller's fields again at every link.
+    const auto vectorOf = [](Pair pair) { return std::bit_cast<Vector2>(pair); };
+    const Pair negateLow = simd::pair(real(-0.0), real(0.0));
+    const auto turned = [&](Pair a) { return flipSigns(simd::swapped(a), negateLow); };
+    const auto turn = [](Pair a, Pair aTurned, Pair v) {
+      return a * simd::lows(v, v) + aTurned * simd::highs(v, v);
+    };
+    const LinkPlacement* const placements = placements_.data();
+    const Vector2* const axes = axis_.data() + 1;  // link i's at i, as below
+    const real* const angles = angle_.data() + 1;
+    Vector2* const origins = origin_.data() + 1;
+    Vector2* const offsets = comOffset_.data() + 1;
+    Vector2* const shifts = shift_.data();
+    Pair parentOrigin = pairOf(basePosition_);
+    Pair parentAxis = pairOf(axis_[0]);
+    Pair parentTurned = turned(parentAxis);
+    const std::size_t n = links_.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Pair shift = turn(parentAxis, parentTurned, pairOf(placements[i].jointPosition));
+      shifts[i] = vectorOf(shift);
+      parentOrigin = parentOrigin + shift;
+      origins[i] = vectorOf(parentOrigin);
+      parentAxis = pairOf(axes[i]);
+      parentTurned = turned(parentAxis);
+      const Pair offset = turn(parentAxis, parentTurned, pairOf(placements[i].centerOfMass));
+      offsets[i] = vectorOf(offset);
+      eachLink(i, vectorOf(parentOrigin + offset), angles[i], vectorOf(parentAxis));
     }
-#endif
-    (void)eachLink;
-    return false;
   }
   /// @p v turned by the angle whose (cos, sin) is @p axis.
   static constexpr Vector2 rotated(Vector2 axis, Vector2 v) {
@@ -425,13 +408,10 @@ class ArticulatedBody {
   /// @p tau: sets u_i and returns the bias it passes to its parent (about the parent's origin).
   Vector3 passBias(std::size_t i, const Vector3& pa, real tau);
   /// inwardPass<true, false, false>()'s loop over a plain chain (allInChain_), with or
-  /// without @p wrenches, in SSE2 pairs (in VEX form with AVX, the same bits), re-associated
-  /// for shorter dependency chains (so not chainStep's last bits): leaves
-  /// the terms it carries to the base in @p inertiaCarried and @p biasCarried and returns true;
-  /// false, having done nothing, without SSE2 or for a real type other than double (a
-  /// template, so that a float build never instantiates the pairs).
-  template <class Real>
-  bool plainChainInwardPass(const Wrenches& wrenches, const Real* torques,
+  /// without @p wrenches, in pairs, re-associated for shorter dependency chains (so not
+  /// chainStep's last bits): leaves the terms it carries to the base in @p inertiaCarried and
+  /// @p biasCarried.
+  void plainChainInwardPass(const Wrenches& wrenches, const real* torques,
                             SymmetricMatrix3& inertiaCarried, Vector3& biasCarried);
   /// The inward sweep, leaves to root: the bias pass from @p wrenches (as solve() takes
   /// them, or none), the joint torques @p torques (one per joint), the forces already in

@@ -10,9 +10,6 @@
 
 #include <algorithm>
 #include <type_traits>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace thyrix {
 
@@ -93,12 +90,12 @@ inline Vector3 ArticulatedBody::passBias(std::size_t i, const Vector3& pa, real 
   return forceVector(t.alpha * pa.x + cross(shift_[i], f) + t.gamma * tau, f + t.beta * ui);
 }
 
-template <class Real>
-bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real* torques,
+void ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const real* torques,
                                            SymmetricMatrix3& inertiaCarried, Vector3& biasCarried) {
-#if defined(__SSE2__)
-  if constexpr (std::is_same_v<Real, double>) {
-    // inwardPass()'s chainStep (with inertias, undamped) in SSE2 pairs: (xy, xz) and (yy, zz)
+  {
+    using Real = real;
+    using Pair = simd::Wide<real, 2>;
+    // inwardPass()'s chainStep (with inertias, undamped) in pairs: (xy, xz) and (yy, zz)
     // of the inertia, the force of the bias, beta, A h: held as scalars, the terms of both
     // chains do not fit in the 16 registers.
     //
@@ -119,7 +116,7 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
     if (n == 0) {
       inertiaCarried = {};
       biasCarried = {};
-      return true;
+      return;
     }
     // What a sweep reads and writes (passed on to the copy compiled for AVX).
     struct Sweep {
@@ -150,43 +147,40 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
       const Real* const jointTorques = w.torques;
       Real* const jointBias = w.jointBias;
       // Two coordinates from @p first on (a Vector2, or a Vector3's force).
-      const auto pairOf = [](const real& first) {
-        return _mm_loadu_pd(reinterpret_cast<const Real*>(&first));
-      };
-      const auto low = [](__m128d pair) { return _mm_cvtsd_f64(pair); };
-      const auto high = [](__m128d pair) { return _mm_cvtsd_f64(_mm_unpackhi_pd(pair, pair)); };
-      const auto swapped = [](__m128d pair) { return _mm_shuffle_pd(pair, pair, 1); };
+      const auto pairOf = [](const real& first) { return Pair::load(&first); };
+      const auto low = [](Pair pair) { return pair.at(0); };
+      const auto high = [](Pair pair) { return pair.at(1); };
       // a.x b.y - a.y b.x from (a.x, a.y) and (b.x, b.y)
-      const auto crossOf = [&](__m128d a, __m128d b) {
-        const __m128d products = _mm_mul_pd(a, swapped(b));
-        return low(_mm_sub_sd(products, _mm_unpackhi_pd(products, products)));
+      const auto crossOf = [&](Pair a, Pair b) {
+        const Pair products = a * simd::swapped(b);
+        return low(products) - high(products);
       };
-      // A h = (yz r.x - yy r.y, zz r.x - yz r.y) from (yy, zz), yz (low lane) and r
-      const auto aTimesH = [](__m128d yyZz, __m128d yz, Real rx, Real ry) {
-        return _mm_sub_pd(_mm_mul_pd(_mm_move_sd(yyZz, yz), _mm_set1_pd(rx)),
-                          _mm_mul_pd(_mm_unpacklo_pd(yyZz, yz), _mm_set1_pd(ry)));
+      // A h = (yz r.x - yy r.y, zz r.x - yz r.y) from (yy, zz), (yz, yz) and r
+      const auto aTimesH = [](Pair yyZz, Pair yz, Real rx, Real ry) {
+        return simd::highs(yz, yyZz) * Pair::broadcast(rx) -
+               simd::lows(yyZz, yz) * Pair::broadcast(ry);
       };
-      const __m128d negateLow = _mm_set_pd(0.0, -0.0);
-      const __m128d zero = _mm_setzero_pd();
+      const Pair negateLow = simd::pair(real(-0.0), real(0.0));
+      const Pair zero = Pair::broadcast(0);
       // (-m c.y, m c.x), the (xy, xz) of link i's own inertia
       const auto ownB = [&](std::size_t i) {
-        return _mm_mul_pd(_mm_xor_pd(_mm_set1_pd(links[i].mass), negateLow),
-                          swapped(pairOf(centres[i].x)));
+        return flipSigns(Pair::broadcast(links[i].mass), negateLow) *
+               simd::swapped(pairOf(centres[i].x));
       };
       const Vector3* const perLink = wrenchKind == 1 ? w.wrenches->perBody + 1 : nullptr;
       // The uniform wrench is read in the loop (from memory, as an operand): kept in
       // registers, it would leave too few for the terms carried.
       const Vector3& uniform = w.wrenches->link;
       // Link i's articulated inertia D_i before its joint, as the child left it: xx, b = (xy,
-      // xz), (yy, zz), and yz (low lane; +0 at the leaf and never -0, as x - y is -0 only for
+      // xz), (yy, zz), and yz in both lanes (+0 at the leaf and never -0, as x - y is -0 only for
       // x = -0, so yz is 0 + yz bit for bit without the addition).
       const std::size_t leaf = w.n - 1;
       Real dxx = links[leaf].inertiaAboutJoint;
-      __m128d b = ownB(leaf);
-      __m128d yyZz = _mm_set1_pd(links[leaf].mass);
-      __m128d yz = zero;
+      Pair b = ownB(leaf);
+      Pair yyZz = Pair::broadcast(links[leaf].mass);
+      Pair yz = zero;
       Real moment = 0;
-      __m128d force = zero;
+      Pair force = zero;
       // Link i >= 1, whose parent is link p = i - 1.
       const auto step = [&](std::size_t i) THYRIX_LAMBDA_ALWAYS_INLINE {
         const std::size_t p = i - 1;
@@ -194,48 +188,48 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
         // What does not wait for the division first, each term used as soon as it is known:
         // GCC allocates registers in about this order, and terms kept longer go to the stack
         // (h.Ah, on the division's chain, and the carried force).
-        const __m128d r = pairOf(shifts[i].x);
+        const Pair r = pairOf(shifts[i].x);
         const Real g = crossOf(r, b);
         const Real gg = g * g;
-        const __m128d ah = aTimesH(yyZz, yz, shifts[i].x, shifts[i].y);
+        const Pair ah = aTimesH(yyZz, yz, shifts[i].x, shifts[i].y);
         const Real hah = crossOf(r, ah);
         // The parent's terms as above, with its own added.
         const Real ownPlusHah = links[p].inertiaAboutJoint + hah;
-        const __m128d bb = _mm_mul_pd(b, b);             // (xy xy, xz xz)
-        const __m128d bxBy = _mm_mul_sd(b, swapped(b));  // xy xz (low lane)
-        const __m128d ownYyZz = _mm_add_pd(_mm_set1_pd(links[p].mass), yyZz);
-        const __m128d ownAh = _mm_add_pd(ownB(p), ah);
-        const __m128d inverseDs = _mm_set1_pd(inverseD);
-        const __m128d beta = _mm_mul_pd(b, inverseDs);
+        const Pair bb = b * b;                   // (xy xy, xz xz)
+        const Pair bxBy = b * simd::swapped(b);  // xy xz in both lanes
+        const Pair ownYyZz = Pair::broadcast(links[p].mass) + yyZz;
+        const Pair ownAh = ownB(p) + ah;
+        const Pair inverseDs = Pair::broadcast(inverseD);
+        const Pair beta = b * inverseDs;
         const Real alpha = -g * inverseD;
         const Real gamma = (dxx + g) * inverseD;
-        const __m128d betaG = _mm_mul_pd(beta, _mm_set1_pd(g));
+        const Pair betaG = beta * Pair::broadcast(g);
         dxx = ownPlusHah - gg * inverseD;
-        yyZz = _mm_sub_pd(ownYyZz, _mm_mul_pd(bb, inverseDs));
-        yz = _mm_sub_sd(yz, _mm_mul_sd(bxBy, inverseDs));
-        b = _mm_sub_pd(ownAh, betaG);
+        yyZz = ownYyZz - bb * inverseDs;
+        yz = yz - bxBy * inverseDs;
+        b = ownAh - betaG;
         JointTerms& t = terms[i];
         t.inverseD = inverseD;
         t.alpha = alpha;
         t.gamma = gamma;
-        _mm_storeu_pd(reinterpret_cast<Real*>(&t.beta), beta);
+        beta.store(&t.beta.x);
         // passBias(i, carried - translateForceBack(w, c), tau); crossOf(centre, wf) written
         // out to use the swapped force. The shift is read again: kept from the start, it would
         // take a register the bias terms need.
         Real pn = moment;
-        __m128d pf = force;
+        Pair pf = force;
         if constexpr (wrenchKind != 0) {
           const Vector3& wrench = wrenchKind == 2 ? uniform : perLink[i];
-          const __m128d wf = pairOf(wrench.y);
-          const __m128d centreCrossWf = _mm_mul_pd(pairOf(centres[i].x), swapped(wf));
+          const Pair wf = pairOf(wrench.y);
+          const Pair centreCrossWf = pairOf(centres[i].x) * simd::swapped(wf);
           pn = moment - (wrench.x + (low(centreCrossWf) - high(centreCrossWf)));
-          pf = _mm_sub_pd(force, wf);
+          pf = force - wf;
         }
         const Real tau = jointTorques[i];
         const Real u = tau - pn;
         jointBias[i] = u;
         moment = alpha * pn + crossOf(pairOf(shifts[i].x), pf) + gamma * tau;
-        force = _mm_add_pd(pf, _mm_mul_pd(beta, _mm_set1_pd(u)));
+        force = pf + beta * Pair::broadcast(u);
       };
       for (std::size_t i = leaf; i > 0; --i) step(i);
       // Link 0's articulated inertia and the bias its child passes.
@@ -268,14 +262,7 @@ bool ArticulatedBody::plainChainInwardPass(const Wrenches& wrenches, const Real*
     if (wrenches.any()) pa = biasCarried - translateForceBack(wrenches.at(1), comOffset_[1]);
     inertiaCarried = articulateJoint<false>(0, inertiaCarried);
     biasCarried = passBias(0, pa, torques[0]);
-    return true;
   }
-#endif
-  static_cast<void>(wrenches);
-  static_cast<void>(torques);
-  static_cast<void>(inertiaCarried);
-  static_cast<void>(biasCarried);
-  return false;
 }
 
 template <bool withInertias, bool damped, bool general>
@@ -325,8 +312,14 @@ void ArticulatedBody::inwardPass(const Wrenches& wrenches, const real* torques) 
   // A plain chain (every link in a chain): a loop without a test per link.
   const bool plainChain = !general && allInChain_;
   bool done = false;  // by plainChainInwardPass()
-  if constexpr (withInertias && !damped)
-    done = plainChain && plainChainInwardPass<real>(wrenches, torques, inertiaCarried, biasCarried);
+  // (In double only: a float build keeps chainStep's association, and so the trajectories of
+  // float's tests, one of which compares the kinematics' cos and sin with the library's.)
+  if constexpr (withInertias && !damped && std::is_same_v<real, double>) {
+    if (plainChain) {
+      plainChainInwardPass(wrenches, torques, inertiaCarried, biasCarried);
+      done = true;
+    }
+  }
   if (plainChain && !done) {
     if (anyWrench) {
       for (std::size_t i = links_.size(); i-- > 0;) chainStep(i, std::true_type{});

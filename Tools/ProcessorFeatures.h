@@ -5,9 +5,9 @@
 
 /// Defined where a function can be compiled for AVX, AVX2 or AVX-512 (`[[gnu::target("avx")]]`,
 /// `[[gnu::target("avx2")]]`, `[[gnu::target("avx512f")]]`) and chosen at run time by
-/// processorHasAvx(), processorHasAvx2() or processorHasAvx512(): GCC or Clang on x86-64.
-/// Elsewhere the portable loops run.
-#if defined(__GNUC__) && defined(__x86_64__)
+/// processorHasAvx(), processorHasAvx2() or processorHasAvx512(): GCC or Clang on x86-64,
+/// except in the scalar build (THYRIX_SIMD_SCALAR). Elsewhere the portable loops run.
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(THYRIX_SIMD_SCALAR)
 #define THYRIX_AVX_DISPATCH 1
 #endif
 

@@ -7,7 +7,9 @@
 #   3. Debug under AddressSanitizer + UndefinedBehaviorSanitizer, with the front-end too;
 #   4. Release, real = float;
 #   5. Release, real = float, built with clang;
-#   6. the libFuzzer targets (fuzz/, clang, AddressSanitizer + UndefinedBehaviorSanitizer), each
+#   6. Release, the scalar build (THYRIX_SIMD=scalar: no intrinsics, no run-time AVX copies),
+#      the library tests only (no examples, Python or MPI);
+#   7. the libFuzzer targets (fuzz/, clang, AddressSanitizer + UndefinedBehaviorSanitizer), each
 #      run for a bounded time from its seed corpus.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -62,6 +64,8 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktra
 run sanitize -DCMAKE_BUILD_TYPE=Debug -DTHYRIX_SANITIZE=address,undefined "${gui[@]}"
 run float -DCMAKE_BUILD_TYPE=Release -DTHYRIX_REAL=float
 run clang-float -DCMAKE_BUILD_TYPE=Release -DTHYRIX_REAL=float -DCMAKE_CXX_COMPILER=clang++-14
+run scalar -DCMAKE_BUILD_TYPE=Release -DTHYRIX_SIMD=scalar -DTHYRIX_BUILD_EXAMPLES=OFF \
+  -DTHYRIX_BUILD_PYTHON=OFF -DTHYRIX_WITH_MPI=OFF
 
 echo "=== fuzzers (clang, address + undefined sanitizers, ${fuzz_seconds:=60} s each) ==="
 # A shape leaking through a border (issue 25, defect 5: one world in about 84,000 still does,
