@@ -77,7 +77,7 @@ void Iunctus::readSensors() {
     std::copy(touch.begin(), touch.end(), sensors_.begin() + firstLinkTouch + i * touchPerLink);
   }
   real held = 0;
-  for (const ContactInfo& contact : contacts) {
+  for (const ContactInfo& contact : contacts()) {
     const PhysicalObject* other = contact.other;
     if (other != nullptr && other != this && !other->fixed && encloses(other->r)) held = 1;
   }

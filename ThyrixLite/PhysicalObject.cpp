@@ -2,6 +2,7 @@
 #include <ThyrixLite/PhysicalObject.h>
 #include <ThyrixLite/Primitive.h>
 #include <ThyrixLite/VisualSensor.h>
+#include <ThyrixLite/World.h>
 
 namespace thyrix {
 
@@ -14,6 +15,11 @@ void PhysicalObject::control() {}
 renamed::controll_is_now_control PhysicalObject::controll() { return {}; }
 
 void PhysicalObject::updateSensors(const World& /*world*/) {}
+
+std::span<ContactInfo> PhysicalObject::contacts() const {
+  if (world_ != nullptr) world_->listContacts();
+  return contacts_;
+}
 
 std::span<const VisualSensor> PhysicalObject::visualSensors() const { return {}; }
 

@@ -47,9 +47,17 @@ class PhysicalObject : public GraphicalObject {
   // pose sits in the 64 bytes from the 64th with the flags and Primitive's direction cache: an
   // articulated link (a CappedRectangle, aligned to 64 bytes) is placed by its agent and read
   // back by the simulator in that one line at each step, not two.
-  /// This step's contacts of this object: a view into the simulator's contact storage, valid
-  /// until the next step starts.
-  std::span<ContactInfo> contacts;
+  /// This step's contacts of this object (ContactInfo): a view into the simulator's contact
+  /// storage, valid until the next step starts or the world's contacts change. The simulator
+  /// lists them on the first read after its contacts changed (Simulator::indexContacts()), so
+  /// that a step in which nothing reads them pays nothing for them; empty for an object not
+  /// registered with a Simulator. Not to be called from two threads at once on one world.
+  [[nodiscard]] std::span<ContactInfo> contacts() const;
+
+ private:
+  std::span<ContactInfo> contacts_;  // the list as the simulator last indexed it
+
+ public:
   Vector2 boxMin;  ///< lower corner of the axis-aligned bounding box, updated each step
   Vector2 boxMax;  ///< upper corner of the axis-aligned bounding box, updated each step
 
@@ -268,7 +276,7 @@ class PhysicalObject : public GraphicalObject {
   std::vector<Primitive*> primitives_;
   std::vector<std::unique_ptr<PhysicalObject>> subBodies_;  // handed to the world on registration
   // Who owns this object besides the unique_ptr it came in, so that a second owner is refused.
-  const World* world_ = nullptr;             // the world it is registered with
+  World* world_ = nullptr;                   // the world it is registered with
   const PhysicalObject* carrier_ = nullptr;  // the object whose sub-body it is, until registered
   std::uint32_t index_ = 0;                  // in its world's objects, once registered
 };

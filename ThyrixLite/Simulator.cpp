@@ -192,14 +192,8 @@ void Simulator::advanceTime() {
     Stepping(const Stepping&) = delete;
     Stepping& operator=(const Stepping&) = delete;
   } stepping(stepping_);
-  detectContacts();
-  // With core shapes only (no object's own hooks, no articulated agent), nothing reads the
-  // objects' contact lists before the solve ends: they are written once, after it, with the
-  // forces, instead of here and again for the forces (two passes over 160 bytes a contact,
-  // the second from the last-level cache). After the step the lists are the same.
+  detectContacts();  // (the objects' lists are made when first read: PhysicalObject::contacts())
   const bool listsAfter = listsAfterSolve();
-  const bool indexAfter = listsAfter && !referenceMode;
-  if (!indexAfter) indexContacts();
   applyMouseForce();
   // Rest: phase 5 for the awake bodies only; a body dragged while at rest wakes.
   if (awakeValid_) {
@@ -219,7 +213,6 @@ void Simulator::advanceTime() {
     World::advanceTime();
     return;
   }
-  if (indexAfter) indexContacts();
   if (referenceMode) {
     for (PhysicalObject& object : objects) object.control();
   } else {
@@ -341,7 +334,8 @@ void Simulator::eraseContacts() {
   contacts.items_.clear();
   contactsComplete_ = false;
   clearContactLists();
-  resetCounts();  // (the list is empty: every contact is counted)
+  listsPending_ = false;  // (no contact: every list is empty)
+  resetCounts();          // (the list is empty: every contact is counted)
   countsComplete_ = true;
 }
 

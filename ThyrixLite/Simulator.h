@@ -70,9 +70,9 @@ struct StepStatistics {
 /// capsule or a Gauss-Seidel error of a light body follows only for small motions
 /// (StepStatistics::substeps; the users' guide, "Walls"). The phases run by hand never divide a
 /// step; the same as advanceTime() wherever no step is divided.
-/// In a world of core shapes only (no object with hooks of its own, no articulated agent),
-/// phase 3 runs after phase 6, with the forces: nothing reads the lists in between, and after
-/// the step they are the same.
+/// advanceTime() runs phase 3 only when an object's list is first read
+/// (PhysicalObject::contacts()), during the step or after it: a step in which nothing reads
+/// the lists pays nothing for them, and the lists read are those phase 3 in its place gives.
 /// The phases are public so that a program can run its own variant of the step. A subclass
 /// that adds per-step logic (a scripted controller, fitness bookkeeping) overrides
 /// advanceTime() and calls Simulator::advanceTime() from it: console loops and GUIWx's
@@ -119,9 +119,10 @@ class Simulator : public World {
   /// step with one detection into an empty list, then a solve, leaves its contacts for the
   /// next step's rest skipping and warm start.)
   void detectContacts();
-  /// Phase 3: lists each contact in its two objects' `contacts` (with the contacts' forces,
-  /// 0 until solveContacts() gives them). In a world of core shapes only, advanceTime() runs
-  /// it after solveContacts() instead: nothing reads the lists in between.
+  /// Phase 3: lists each contact in its two objects' PhysicalObject::contacts() (with the
+  /// contacts' forces, 0 until solveContacts() gives them, which it then gives the lists too).
+  /// advanceTime() does not call it: the first read of a list after the contacts changed
+  /// does. Each ContactInfo's `p` is relative to the reference point its body was detected at.
   void indexContacts();
   /// Phase 4: while dragging, adds the force that pulls the grabbed point to the mouse.
   void applyMouseForce();
@@ -663,8 +664,8 @@ class Simulator : public World {
   bool previousIndexed_ = false;   // previousOrder_ and previousSortedKeys_ are up to date
   bool contactsSolved_ = false;    // the solver wrote the forces of `contacts`
   bool previousSolved_ = false;    // previousContacts_ carries its solve's forces (warm start)
-  // Core shapes only (no object's own hooks, no articulated agent): advanceTime() indexes the
-  // contacts after solveContacts(), as nothing reads the lists before.
+  // Core shapes only (no object's own hooks, no articulated agent): nothing between the
+  // phases reads or moves the objects, so a step may be divided (stepInParts()).
   bool listsAfterSolve() const { return customObjects_.empty() && !hasMultiBodies_; }
   // The objects that do not keep PhysicalObject's step hooks, in registration order (the
   // others' hooks are called without virtual calls).
@@ -683,6 +684,13 @@ class Simulator : public World {
   bool countsComplete_ = true;    // every contact of `contacts` is counted
   std::vector<std::uint32_t> listedObjects_;  // the first listedCount_ have `contacts` not empty
   std::size_t listedCount_ = 0;
+  // The lists do not follow `contacts` (changed by a detection since): the first read of a list
+  // (listContacts()) indexes them.
+  bool listsPending_ = false;
+  // The contacts were detected here (bodyStates_ holds the poses they were detected at), not
+  // restored (their bodies' poses are then the objects' own).
+  bool originsDetected_ = true;
+  void listContacts() override;
   /// Counts a contact of bodies @p bodyA and @p bodyB (countedObjects_ has room for every
   /// object and one more).
   void countContact(std::uint32_t bodyA, std::uint32_t bodyB);

@@ -175,6 +175,8 @@ void Simulator::detectContacts() {
   if (contacts.size() > scannedListLength) chainFirstPairs(start);
   contactsComplete_ = fromEmpty;
   previousValid_ = false;  // used: the next detection compares against this one
+  listsPending_ = true;    // (the objects' lists are made when first read)
+  originsDetected_ = true;
   statistics_.contacts = contacts.size();
   if (referenceMode) {
     for (PhysicalObject& object : objects) object.updateSensors(*this);
@@ -498,6 +500,10 @@ void Simulator::addContactsPlainly(std::uint32_t shapeA, std::uint32_t shapeB) {
   appendContacts(shapeA, shapeB, manifold);
 }
 
+void Simulator::listContacts() {
+  if (listsPending_) indexContacts();
+}
+
 void Simulator::indexContacts() {
   // Counting sort by object into one array; each object's `contacts` is its slice of it. Only
   // the objects with contacts are visited (listed in order of their first contact), so a
@@ -516,38 +522,45 @@ void Simulator::indexContacts() {
   for (const std::uint32_t i : counted) {
     const std::uint32_t n = objectContactCursor_[i];
     objectContactCursor_[i] = offset;
-    objects[i].contacts = std::span(objectContacts_).subspan(offset, n);
+    objects[i].contacts_ = std::span(objectContacts_).subspan(offset, n);
     offset += n;
   }
-  // The contacts' forces: 0 from detection until the solve gives them (advanceTime() in a
-  // world of core shapes indexes after it).
+  // The contacts' forces: 0 from detection until the solve gives them (lists first read
+  // after the solve have them; the solve gives them to lists read before).
+  // p is relative to the reference point the body was detected at (after phase 8 moved it:
+  // the pose its detection recorded), or, for restored contacts, where it was restored.
+  const auto origin = [&](std::uint32_t body, const PhysicalObject& object) {
+    return originsDetected_ ? bodyStates_[body].r : object.r;
+  };
   for (std::uint32_t k = 0; k < contacts.size(); ++k) {
     const GlobalContactInfo& c = contacts.items_[k];
     // The point relative to each body's reference point, and the side: A is pushed against n.
-    objectContacts_[objectContactCursor_[c.bodyA]++] = ContactInfo{.index = k,
-                                                                   .other = c.objectB,
-                                                                   .primitive = c.primitiveA,
-                                                                   .otherPrimitive = c.primitiveB,
-                                                                   .p = c.point - c.objectA->r,
-                                                                   .point = c.point,
-                                                                   .n = c.normal,
-                                                                   .sigma = -1,
-                                                                   .normal = -c.normal,
-                                                                   .depth = c.depth,
-                                                                   .force = c.force,
-                                                                   .type = ContactType::Force};
-    objectContacts_[objectContactCursor_[c.bodyB]++] = ContactInfo{.index = k,
-                                                                   .other = c.objectA,
-                                                                   .primitive = c.primitiveB,
-                                                                   .otherPrimitive = c.primitiveA,
-                                                                   .p = c.point - c.objectB->r,
-                                                                   .point = c.point,
-                                                                   .n = c.normal,
-                                                                   .sigma = 1,
-                                                                   .normal = c.normal,
-                                                                   .depth = c.depth,
-                                                                   .force = c.force,
-                                                                   .type = ContactType::Force};
+    objectContacts_[objectContactCursor_[c.bodyA]++] =
+        ContactInfo{.index = k,
+                    .other = c.objectB,
+                    .primitive = c.primitiveA,
+                    .otherPrimitive = c.primitiveB,
+                    .p = c.point - origin(c.bodyA, *c.objectA),
+                    .point = c.point,
+                    .n = c.normal,
+                    .sigma = -1,
+                    .normal = -c.normal,
+                    .depth = c.depth,
+                    .force = c.force,
+                    .type = ContactType::Force};
+    objectContacts_[objectContactCursor_[c.bodyB]++] =
+        ContactInfo{.index = k,
+                    .other = c.objectA,
+                    .primitive = c.primitiveB,
+                    .otherPrimitive = c.primitiveA,
+                    .p = c.point - origin(c.bodyB, *c.objectB),
+                    .point = c.point,
+                    .n = c.normal,
+                    .sigma = 1,
+                    .normal = c.normal,
+                    .depth = c.depth,
+                    .force = c.force,
+                    .type = ContactType::Force};
   }
   // (Each cursor ends at its slice's end: clearContactLists() zeroes it with the list.)
   // The counted objects are the listed ones now (and none is counted).
@@ -555,13 +568,14 @@ void Simulator::indexContacts() {
   listedCount_ = countedCount_;
   countedCount_ = 0;
   fitCountedObjects();
+  listsPending_ = false;
 }
 
 void Simulator::clearContactLists() {
   // (Also the cursors indexContacts() left: each object's count starts from 0 again.)
   for (std::size_t k = 0; k < listedCount_; ++k) {
     const std::uint32_t i = listedObjects_[k];
-    objects[i].contacts = {};
+    objects[i].contacts_ = {};
     objectContactCursor_[i] = 0;
   }
   listedCount_ = 0;
@@ -589,7 +603,8 @@ void Simulator::restoreContacts(std::vector<GlobalContactInfo> list, bool comple
   previousValid_ = false;
   previousSolved_ = false;
   countsComplete_ = false;
-  indexContacts();  // each object's list, as the step left it
+  originsDetected_ = false;  // (the caches that kept the detected poses are forgotten)
+  indexContacts();           // each object's list, as the step left it
 }
 
 }  // namespace thyrix

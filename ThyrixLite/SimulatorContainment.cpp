@@ -255,7 +255,6 @@ void Simulator::stepInParts() {
   parts_ = 1;
   substep_ = 0;
   statistics_.substeps = total;
-  indexContacts();
 }
 
 }  // namespace thyrix

@@ -45,6 +45,8 @@ void Simulator::updateGeometryPlainly() {
     state.fixed = body.fixed ? 1 : 0;
     state.group = body.collisionGroup;
     state.movable = movable(index);
+    state.r = body.r;  // (what the contact lists' p is relative to: the pose detected at)
+    state.alpha = body.alpha;
     Vector2 boxMin{realMax, realMax};
     Vector2 boxMax{-realMax, -realMax};
     for (std::uint32_t s = state.firstShape; s < state.firstShape + state.shapeCount; ++s) {

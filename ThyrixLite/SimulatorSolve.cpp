@@ -17,7 +17,7 @@ void Simulator::solveContacts() {
   // end past a border unseen, the contacts are detected again with margins that cover the
   // motion (and listed again if they were), and solved again: the objects still hold their
   // free velocities.
-  const bool listed = listedCount_ != 0;
+  const bool listed = listedCount_ != 0 && !listsPending_;
   statistics_.redetections = 0;
   while (solveOnce(!hasMultiBodies_ && statistics_.redetections < maxRedetections)) {
     ++statistics_.redetections;
@@ -308,12 +308,11 @@ bool Simulator::solvePass(bool mayRedetect, bool filtered, bool& partial) {
     }
   // The contacts keep their forces: next step's warm start reads them there.
   storeForces();
-  // Lists made after the solve (advanceTime() with core shapes) take the forces from the
-  // contacts; objectContacts_ is then the last step's, seen by no object. (No object is
-  // listed then: eraseContacts() cleared the lists, and only indexContacts() fills them.)
-  if (listedCount_ != 0 && filtered)
+  // Lists made after the solve take the forces from the contacts; lists read before it (an
+  // object's hook) are given them here.
+  if (listedCount_ != 0 && !listsPending_ && filtered)
     for (ContactInfo& info : objectContacts_) info.force = contacts.items_[info.index].force;
-  else if (listedCount_ != 0)
+  else if (listedCount_ != 0 && !listsPending_)
     for (ContactInfo& info : objectContacts_) info.force = rows_[info.index].force;
   updateTactileSensors();
   return false;

@@ -85,6 +85,10 @@ class World {
   }
 
  private:
+  friend class PhysicalObject;  // PhysicalObject::contacts() has its lists made when first read
+  /// Makes each object's contact list if the world's contacts changed since it was made
+  /// (PhysicalObject::contacts()); World's own has none to make.
+  virtual void listContacts() {}
   void adopt(std::unique_ptr<PhysicalObject> object);
 
   real timestep_;

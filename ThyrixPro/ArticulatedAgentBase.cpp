@@ -353,12 +353,13 @@ void ArticulatedAgentBase::checkBody(int b) const {
 }
 
 LinkContactInfo ArticulatedAgentBase::linkContact(std::size_t k) const {
-  if (k >= contacts.size())
+  const std::span<const ContactInfo> list = contacts();
+  if (k >= list.size())
     throw InvalidArgument("ArticulatedAgentBase.linkContact.k",
-                          "must be below the " + std::to_string(contacts.size()) +
+                          "must be below the " + std::to_string(list.size()) +
                               " contacts of this step (got " + std::to_string(k) + ")");
   LinkContactInfo info;
-  static_cast<ContactInfo&>(info) = contacts[k];
+  static_cast<ContactInfo&>(info) = list[k];
   info.body = bodyOf(*info.primitive);
   info.p = info.point - centerOfMass(info.body);
   return info;
@@ -370,8 +371,9 @@ std::span<const LinkContactInfo> ArticulatedAgentBase::linkContacts(int b) {
         "ArticulatedAgentBase.body",
         "must be in [-1, " + std::to_string(linkCount()) + ") (got " + std::to_string(b) + ")");
   linkContactList_.clear();
-  for (std::size_t k = 0; k < contacts.size(); ++k)
-    if (bodyOf(*contacts[k].primitive) == b) linkContactList_.push_back(linkContact(k));
+  const std::span<const ContactInfo> list = contacts();
+  for (std::size_t k = 0; k < list.size(); ++k)
+    if (bodyOf(*list[k].primitive) == b) linkContactList_.push_back(linkContact(k));
   // A limit's torque acts on its joint's link and, reversed, on the link's parent.
   const auto primitiveOf = [this](int body) -> Primitive* {
     return body == base ? baseParts_.front().get() : linkShapes_[index(body)].get();
@@ -405,7 +407,7 @@ std::span<const LinkContactInfo> ArticulatedAgentBase::linkContacts(int b) {
 real ArticulatedAgentBase::contactForceOn(int b) const {
   checkBody(b);
   real sum = 0;
-  for (const ContactInfo& c : contacts)
+  for (const ContactInfo& c : contacts())
     if (bodyOf(*c.primitive) == b) sum += c.force;
   return sum;
 }

@@ -113,7 +113,7 @@ void tightenGaussSeidel(Simulator& simulator) {
 /// How many of the agent's contacts touch another of its own bodies.
 int selfContacts(const Agent& agent) {
   int count = 0;
-  for (std::size_t k = 0; k < agent.contacts.size(); ++k)
+  for (std::size_t k = 0; k < agent.contacts().size(); ++k)
     count += agent.linkContact(k).other == &agent ? 1 : 0;
   return count;
 }
@@ -322,7 +322,7 @@ TEST_P(ArticulatedAgentTest, LinkPushedAgainstABorderDoesNotPenetrate) {
     agent.externalForce = {0, -1};
     simulator.advanceTime();
     EXPECT_LT(scenes::largestOverlap(simulator), real(0.01)) << "step " << step;
-    for (std::size_t k = 0; k < agent.contacts.size(); ++k) {
+    for (std::size_t k = 0; k < agent.contacts().size(); ++k) {
       const LinkContactInfo c = agent.linkContact(k);
       if (c.body >= 0 && c.force > 0) ++linkContacts;
       EXPECT_GE(c.force, 0);
@@ -356,10 +356,10 @@ TEST_P(ArticulatedAgentTest, LinkPressedOnABorderBalancesItsJointTorque) {
     simulator.advanceTime();
     EXPECT_LT(scenes::largestOverlap(simulator), real(0.01)) << "step " << step;
   }
-  ASSERT_GT(agent.contacts.size(), 0u);
+  ASSERT_GT(agent.contacts().size(), 0u);
   EXPECT_NEAR(agent.jointRate(0), 0, loose);
   real moment = 0;
-  for (std::size_t k = 0; k < agent.contacts.size(); ++k) {
+  for (std::size_t k = 0; k < agent.contacts().size(); ++k) {
     const LinkContactInfo c = agent.linkContact(k);
     EXPECT_EQ(c.body, 0);
     EXPECT_NEAR(c.normal.y, 1, tight);
@@ -501,7 +501,7 @@ TEST(ArticulatedAgentSolvers, AgentPushesAFreeCircleInOneIsland) {
 /// Expects none of @p agent's self-contacts at @p step between a link and its parent: they
 /// overlap at their joint and must be left untouched.
 void expectNoContactBetweenNeighbours(const Agent& agent, int step) {
-  for (std::size_t k = 0; k < agent.contacts.size(); ++k) {
+  for (std::size_t k = 0; k < agent.contacts().size(); ++k) {
     const LinkContactInfo c = agent.linkContact(k);
     if (c.other != &agent) continue;
     const int other = Agent::bodyOf(*c.otherPrimitive);
@@ -617,7 +617,7 @@ TEST(ArticulatedAgentRules, ComposedBodiesInARowTouchTheirNeighboursNotThemselve
   simulator.advanceTime();
   for (std::size_t k = 0; k < bodies.size(); ++k) {
     int withNext = 0;
-    for (const ContactInfo& c : bodies[k]->contacts) {
+    for (const ContactInfo& c : bodies[k]->contacts()) {
       EXPECT_NE(c.other, bodies[k]) << "body " << k;
       if (k + 1 < bodies.size() && c.other == bodies[k + 1]) ++withNext;
     }
@@ -1168,7 +1168,7 @@ TEST(ArticulatedAgentRules, LoopsZeroLengthLinksAndBadInputAreRefusedNamingTheFi
     EXPECT_EQ(thrownField([&] { (void)agent.pointVelocity(b, {}); }), "ArticulatedAgentBase.body");
     EXPECT_EQ(thrownField([&] { (void)agent.contactForceOn(b); }), "ArticulatedAgentBase.body");
   }
-  EXPECT_EQ(thrownField([&] { (void)agent.linkContact(agent.contacts.size()); }),
+  EXPECT_EQ(thrownField([&] { (void)agent.linkContact(agent.contacts().size()); }),
             "ArticulatedAgentBase.linkContact.k");
   EXPECT_EQ(thrownField([&] { (void)agent.jointAngle(1); }), "<no exception>");
   EXPECT_EQ(thrownField([&] { (void)agent.centerOfMass(-1); }), "<no exception>");

@@ -219,7 +219,7 @@ TEST(BroadPhaseNonFinite, ACircleSetToNaNOrFarAwayInACrowdGetsNoContacts) {
       EXPECT_NE(contact.objectB, &lost);
       ++contacts;
     }
-    EXPECT_TRUE(lost.contacts.empty());
+    EXPECT_TRUE(lost.contacts().empty());
     EXPECT_GT(contacts, 200u) << "the others still touch";
     for (const Circle* circle : circles) {
       if (circle != &lost) {

@@ -99,9 +99,9 @@ TEST(ComposedPhysicalObject, MovesAsOneBodyUnderContact) {
   EXPECT_GT(tip.r.x + real(0.25), real(2.99));
   EXPECT_NE(body.alpha, 0);
   // Contacts of the part are the body's contacts, with the part named.
-  ASSERT_FALSE(body.contacts.empty());
-  for (const ContactInfo& info : body.contacts) EXPECT_TRUE(info.primitive != nullptr);
-  EXPECT_TRUE(tip.contacts.empty()) << "contacts belong to the body, not the part";
+  ASSERT_FALSE(body.contacts().empty());
+  for (const ContactInfo& info : body.contacts()) EXPECT_TRUE(info.primitive != nullptr);
+  EXPECT_TRUE(tip.contacts().empty()) << "contacts belong to the body, not the part";
 }
 
 TEST(ComposedPhysicalObject, BadPartsAreRefusedAndTheBodyUnchanged) {

@@ -45,8 +45,8 @@ TEST_P(ContactInfoTest, CircleOnABorderSeesItsPointAtMinusRadiusAlongTheNormal) 
   disk.externalForce = {0, -push};
   simulator.advanceTime();
 
-  ASSERT_EQ(disk.contacts.size(), 1u);
-  const ContactInfo& c = disk.contacts[0];
+  ASSERT_EQ(disk.contacts().size(), 1u);
+  const ContactInfo& c = disk.contacts()[0];
   EXPECT_EQ(c.type, ContactType::Force);
   EXPECT_EQ(c.other, &floor);
   // The force on the disk is sigma * force * n, straight up, and balances the push.
@@ -57,8 +57,8 @@ TEST_P(ContactInfoTest, CircleOnABorderSeesItsPointAtMinusRadiusAlongTheNormal) 
   expectNear(c.p, -radius * c.normal, tight);
   expectNear(c.point, Vector2{2, 0}, tight);
   // The floor sees the same contact with the same n, from the other side.
-  ASSERT_EQ(floor.contacts.size(), 1u);
-  const ContactInfo& f = floor.contacts[0];
+  ASSERT_EQ(floor.contacts().size(), 1u);
+  const ContactInfo& f = floor.contacts()[0];
   expectNear(f.n, c.n, 0);
   EXPECT_EQ(f.sigma, -c.sigma);
   expectNear(f.p, f.point - floor.r, 0);
@@ -76,10 +76,10 @@ TEST_P(ContactInfoTest, TwoCirclesSeeOneNormalWithOppositeSigns) {
   a.externalForce = direction;  // A pushed into B
   simulator.advanceTime();
 
-  ASSERT_EQ(a.contacts.size(), 1u);
-  ASSERT_EQ(b.contacts.size(), 1u);
-  const ContactInfo& ca = a.contacts[0];
-  const ContactInfo& cb = b.contacts[0];
+  ASSERT_EQ(a.contacts().size(), 1u);
+  ASSERT_EQ(b.contacts().size(), 1u);
+  const ContactInfo& ca = a.contacts()[0];
+  const ContactInfo& cb = b.contacts()[0];
   // One n for the contact; each body pushed away from the other.
   expectNear(ca.n, cb.n, 0);
   EXPECT_EQ(ca.sigma, -cb.sigma);
@@ -110,8 +110,8 @@ TEST_P(ContactInfoTest, PartOfAComposedBodyIsSeenRelativeToTheBodysReferencePoin
   body.externalForce = {0, -1};
   simulator.advanceTime();
 
-  ASSERT_EQ(body.contacts.size(), 1u);
-  const ContactInfo& c = body.contacts[0];
+  ASSERT_EQ(body.contacts().size(), 1u);
+  const ContactInfo& c = body.contacts()[0];
   expectNear(c.point, {lowCentre.x, 0}, tight);
   expectNear(c.p, c.point - detectedAt, 0);
   expectNear(c.p, Vector2{lowCentre.x - detectedAt.x, -detectedAt.y}, tight);
@@ -210,7 +210,7 @@ TEST_P(ContactInfoTest, LinkContactsListTheForceContactsOfTheirBody) {
       expectNear(c.normal, c.sigma * c.n, 0);
     }
   }
-  EXPECT_EQ(listed, agent.contacts.size()) << "each contact in its body's list, once";
+  EXPECT_EQ(listed, agent.contacts().size()) << "each contact in its body's list, once";
   EXPECT_GE(listed, 4u) << "the base and the three links on the floor";
   EXPECT_THROW(static_cast<void>(agent.linkContacts(agent.linkCount())), InvalidArgument);
 }

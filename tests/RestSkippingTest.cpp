@@ -227,14 +227,14 @@ TEST(RestSkipping, ARestingBodyHitLaterMovesAndGetsItsContacts) {
   resting.r = {3, 0};
   for (int step = 0; step < 50; ++step) simulator.advanceTime();  // both at rest a while
   EXPECT_EQ(resting.r.x, 3);
-  EXPECT_TRUE(resting.contacts.empty());
+  EXPECT_TRUE(resting.contacts().empty());
   for (int step = 0; step < 400; ++step) {
     pusher.externalForce = {1, 0};
     simulator.advanceTime();
   }
   EXPECT_GT(resting.r.x, real(3.5)) << "the resting circle was pushed along";
-  EXPECT_FALSE(resting.contacts.empty());
-  EXPECT_GT(resting.contacts[0].force, 0);
+  EXPECT_FALSE(resting.contacts().empty());
+  EXPECT_GT(resting.contacts()[0].force, 0);
 }
 
 TEST(RestSkipping, ABodyMovedByHandIsNoticed) {

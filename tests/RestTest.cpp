@@ -64,7 +64,7 @@ std::uint64_t worldHash(const Simulator& simulator) {
       hash.add(part->r);
       hash.add(part->alpha);
     }
-    for (const ContactInfo& info : object.contacts) {
+    for (const ContactInfo& info : object.contacts()) {
       hash.add(info.p);
       hash.add(info.force);
     }

@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace thyrix {
@@ -132,7 +133,7 @@ TEST_P(SimulatorTest, ContactsAreIndexedInBothObjectsWithOpposedNormalsAndForces
   ASSERT_FALSE(simulator.contacts.empty());
   std::size_t listed = 0;
   for (const PhysicalObject& object : simulator.objects) {
-    for (const ContactInfo& info : object.contacts) {
+    for (const ContactInfo& info : object.contacts()) {
       ++listed;
       const GlobalContactInfo& global = simulator.contacts[info.index];
       ASSERT_TRUE(global.objectA == &object || global.objectB == &object);
@@ -149,7 +150,7 @@ TEST_P(SimulatorTest, ContactsAreIndexedInBothObjectsWithOpposedNormalsAndForces
     Vector2 net = Vector2{-1, -1} * body->m;
     real torque = 0;
     const Vector2 centreWhenSolved = body->r - body->v * simulator.timestep();
-    for (const ContactInfo& info : body->contacts) {
+    for (const ContactInfo& info : body->contacts()) {
       net += info.normal * info.force;
       torque += cross(info.point - centreWhenSolved, info.normal * info.force);
     }
@@ -170,15 +171,15 @@ void expectContactListsMatch(const Simulator& simulator) {
       const GlobalContactInfo& global = simulator.contacts[k];
       for (const bool sideA : {true, false}) {
         if ((sideA ? global.bodyA : global.bodyB) != i) continue;
-        ASSERT_LT(next, object.contacts.size()) << "object " << i << ", contact " << k;
-        const ContactInfo& info = object.contacts[next++];
+        ASSERT_LT(next, object.contacts().size()) << "object " << i << ", contact " << k;
+        const ContactInfo& info = object.contacts()[next++];
         EXPECT_EQ(info.index, k);
         EXPECT_EQ(info.other, sideA ? global.objectB : global.objectA);
         EXPECT_EQ(info.primitive, sideA ? global.primitiveA : global.primitiveB);
         EXPECT_EQ(info.normal, sideA ? -global.normal : global.normal);
       }
     }
-    EXPECT_EQ(next, object.contacts.size()) << "object " << i;
+    EXPECT_EQ(next, object.contacts().size()) << "object " << i;
   }
 }
 
@@ -201,7 +202,7 @@ TEST(Simulator, ContactListsFollowThePhasesRunByHand) {
   simulator.indexContacts();
   expectContactListsMatch(simulator);
   simulator.eraseContacts();
-  for (const PhysicalObject& object : simulator.objects) EXPECT_TRUE(object.contacts.empty());
+  for (const PhysicalObject& object : simulator.objects) EXPECT_TRUE(object.contacts().empty());
   simulator.detectContacts();  // detected, not indexed, erased: nothing left of its counts
   simulator.eraseContacts();
   simulator.detectContacts();
@@ -217,7 +218,7 @@ TEST(Simulator, ContactListsFollowThePhasesRunByHand) {
   simulator.detectContacts();
   simulator.indexContacts();
   expectContactListsMatch(simulator);
-  EXPECT_FALSE(added.contacts.empty());
+  EXPECT_FALSE(added.contacts().empty());
   for (int step = 0; step < 5; ++step) simulator.advanceTime();
   expectContactListsMatch(simulator);
 }
@@ -259,10 +260,10 @@ TEST_P(SimulatorTest, AdvanceTimeEndsAsThePhasesInOrder) {
     const PhysicalObject& b = byHand.objects[i];
     EXPECT_EQ(a.r, b.r) << "object " << i;
     EXPECT_EQ(a.v, b.v) << "object " << i;
-    ASSERT_EQ(a.contacts.size(), b.contacts.size()) << "object " << i;
-    for (std::size_t j = 0; j < a.contacts.size(); ++j) {
-      const ContactInfo& x = a.contacts[j];
-      const ContactInfo& y = b.contacts[j];
+    ASSERT_EQ(a.contacts().size(), b.contacts().size()) << "object " << i;
+    for (std::size_t j = 0; j < a.contacts().size(); ++j) {
+      const ContactInfo& x = a.contacts()[j];
+      const ContactInfo& y = b.contacts()[j];
       EXPECT_EQ(x.index, y.index);
       EXPECT_EQ(x.point, y.point);
       EXPECT_EQ(x.normal, y.normal);
@@ -271,6 +272,113 @@ TEST_P(SimulatorTest, AdvanceTimeEndsAsThePhasesInOrder) {
     }
   }
   expectContactListsMatch(stepped);
+}
+
+/// Expects the contact lists of @p a and @p b, worlds of the same scene, equal in every field
+/// (the objects and primitives compared by their positions in their worlds).
+void expectSameContactLists(const Simulator& a, const Simulator& b) {
+  const auto position = [](const Simulator& simulator, const PhysicalObject* object) {
+    for (std::size_t i = 0; i < simulator.objects.size(); ++i)
+      if (&simulator.objects[i] == object) return i;
+    return simulator.objects.size();
+  };
+  ASSERT_EQ(a.objects.size(), b.objects.size());
+  for (std::size_t i = 0; i < a.objects.size(); ++i) {
+    const std::span<ContactInfo> x = a.objects[i].contacts();
+    const std::span<ContactInfo> y = b.objects[i].contacts();
+    ASSERT_EQ(x.size(), y.size()) << "object " << i;
+    for (std::size_t j = 0; j < x.size(); ++j) {
+      EXPECT_EQ(x[j].index, y[j].index);
+      EXPECT_EQ(position(a, x[j].other), position(b, y[j].other));
+      EXPECT_EQ(position(a, x[j].primitive), position(b, y[j].primitive));
+      EXPECT_EQ(position(a, x[j].otherPrimitive), position(b, y[j].otherPrimitive));
+      EXPECT_EQ(x[j].p, y[j].p) << "object " << i << ", contact " << j;
+      EXPECT_EQ(x[j].point, y[j].point);
+      EXPECT_EQ(x[j].n, y[j].n);
+      EXPECT_EQ(x[j].sigma, y[j].sigma);
+      EXPECT_EQ(x[j].normal, y[j].normal);
+      EXPECT_EQ(x[j].depth, y[j].depth);
+      EXPECT_EQ(x[j].force, y[j].force);
+      EXPECT_EQ(x[j].type, y[j].type);
+    }
+  }
+}
+
+// advanceTime() lists the contacts only when a list is read: read after the step, when phase
+// 8 has moved the bodies, the lists are those phase 3 gave in its place (the phases by hand),
+// p relative to where each body was detected, not to where it went.
+TEST_P(SimulatorTest, ListsReadAfterTheStepAreThoseOfPhaseThree) {
+  Simulator stepped;
+  Simulator byHand;
+  for (Simulator* simulator : {&stepped, &byHand}) {
+    simulator->setContactSolver(GetParam());
+    simulator->setGravity({0, -1});
+  }
+  const auto bodies = scenes::addMixedPile(stepped, 80, 5);
+  const auto handBodies = scenes::addMixedPile(byHand, 80, 5);
+  stepped.advanceTime();  // (its deep overlaps are run in substeps: see the test above)
+  byHand.advanceTime();
+  std::size_t moved = 0;
+  for (int step = 1; step < 100; ++step) {
+    scenes::push(bodies, {-1, 0});
+    scenes::push(handBodies, {-1, 0});
+    stepped.advanceTime();
+    ASSERT_EQ(stepped.statistics().substeps, 1u) << "step " << step;
+    byHand.eraseContacts();
+    byHand.detectContacts();
+    byHand.indexContacts();
+    byHand.applyMouseForce();
+    byHand.computeDerivativesWithoutContacts();
+    byHand.solveContacts();
+    for (PhysicalObject& object : byHand.objects) object.control();
+    byHand.integrator().integrate(byHand, byHand.timestep());
+    if (step % 33 != 0) continue;  // read now and then: each read lists that step's contacts
+    expectSameContactLists(stepped, byHand);
+    for (const PhysicalObject& object : stepped.objects)
+      for (const ContactInfo& info : object.contacts())
+        moved += info.p != info.point - object.r ? 1 : 0;  // (the same operation as phase 3's)
+  }
+  expectSameContactLists(stepped, byHand);
+  EXPECT_GT(moved, 0u) << "no body moved after its detection: p's origin was not tested";
+}
+
+/// A circle whose hook reads its contacts before the solve, if told to.
+class EarlyReader : public Circle {
+ public:
+  using Circle::Circle;
+  bool reads = false;
+  std::size_t seen = 0;  ///< contacts it saw (forces not yet solved)
+  void computeDerivativesWithoutContacts() override {
+    if (reads) seen += contacts().size();
+    Circle::computeDerivativesWithoutContacts();
+  }
+};
+
+// A list read by a hook before the solve is given the solve's forces: after the step, every
+// list is the one a world whose hook reads nothing lists when read.
+TEST_P(SimulatorTest, ListsReadBeforeTheSolveEndTheStepAsListsReadAfterIt) {
+  Simulator reading;
+  Simulator quiet;
+  std::vector<EarlyReader*> readers;
+  for (Simulator* simulator : {&reading, &quiet}) {
+    simulator->setContactSolver(GetParam());
+    addCornerPile(*simulator, 3);
+    auto& reader = simulator->registerObject(std::make_unique<EarlyReader>(real(0.3), real(1)));
+    reader.r = {real(5.4), real(5.4)};
+    readers.push_back(&reader);
+  }
+  readers[0]->reads = true;
+  for (int step = 0; step < 200; ++step) {
+    for (EarlyReader* reader : readers) reader->externalForce = {-1, -1};
+    reading.advanceTime();
+    quiet.advanceTime();
+    ASSERT_EQ(scenes::stateHash(reading), scenes::stateHash(quiet)) << "step " << step;
+    if (step % 50 == 49) expectSameContactLists(reading, quiet);
+  }
+  EXPECT_GT(readers[0]->seen, 0u);
+  real force = 0;
+  for (const ContactInfo& info : readers[0]->contacts()) force += info.force;
+  EXPECT_GT(force, 0) << "pushed into the pile";
 }
 
 /// A circle of radius 0.1 pushed onto a floor at 4 m/s (0.04 m, 40% of its radius, per step),
