@@ -407,6 +407,9 @@ class Simulator : public World {
   /// findBorderReach for all borders at once, none of which moved; false (nothing done) when
   /// a border moved or there are more than a few.
   bool findBorderReachTogether(std::size_t words);
+  /// Puts the pair's shapes in the narrow phase's order (the lower ShapeType first); false if
+  /// they may not touch (both fixed, one collision group, or parts of one body kept apart).
+  bool orderAndFilter(std::uint32_t& shapeA, std::uint32_t& shapeB) const;
   void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   /// Two circles that addContacts would test exactly, as it would (A first).
   /// Plain numbers, no Vector2: a batch on the stack is then not zeroed at every detection

@@ -437,15 +437,20 @@ void Simulator::addCirclePairs(std::span<const CirclePair> pairs) {
     add(std::false_type{});
 }
 
-void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
+bool Simulator::orderAndFilter(std::uint32_t& shapeA, std::uint32_t& shapeB) const {
   if (shapes_[shapeB].type < shapes_[shapeA].type) std::swap(shapeA, shapeB);
   const Shape& a = shapes_[shapeA];
   const Shape& b = shapes_[shapeB];
-  if (!a.movable && !b.movable) return;
-  if (a.group != 0 && a.group == b.group) return;
-  if (a.body == b.body &&
-      !ownShapesMayTouch(multiBodies_[a.body], bodyStates_[a.body].firstShape, shapeA, shapeB))
-    return;
+  if (!a.movable && !b.movable) return false;
+  if (a.group != 0 && a.group == b.group) return false;
+  return a.body != b.body ||
+         ownShapesMayTouch(multiBodies_[a.body], bodyStates_[a.body].firstShape, shapeA, shapeB);
+}
+
+void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
+  if (!orderAndFilter(shapeA, shapeB)) return;
+  const Shape& a = shapes_[shapeA];
+  const Shape& b = shapes_[shapeB];
   const ShapeGeometry& ga = geometry_[shapeA];
   const ShapeGeometry& gb = geometry_[shapeB];
   const real margin =
@@ -473,14 +478,9 @@ void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
 }
 
 void Simulator::addContactsPlainly(std::uint32_t shapeA, std::uint32_t shapeB) {
-  if (shapes_[shapeB].type < shapes_[shapeA].type) std::swap(shapeA, shapeB);
+  if (!orderAndFilter(shapeA, shapeB)) return;
   const Shape& a = shapes_[shapeA];
   const Shape& b = shapes_[shapeB];
-  if (!a.movable && !b.movable) return;
-  if (a.group != 0 && a.group == b.group) return;
-  if (a.body == b.body &&
-      !ownShapesMayTouch(multiBodies_[a.body], bodyStates_[a.body].firstShape, shapeA, shapeB))
-    return;
   const ShapeGeometry& ga = geometry_[shapeA];
   const ShapeGeometry& gb = geometry_[shapeB];
   const real margin =
