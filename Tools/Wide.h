@@ -12,16 +12,13 @@
 /// its scalar definition does, in the same order, so every definition gives the same bits
 /// (multiply-adds are never fused: the build has `-ffp-contract=off`).
 ///
-/// @def THYRIX_SIMD_AVX2_DISPATCH
-/// Defined where a kernel can also be compiled for AVX2 and chosen at run time (an optimized
-/// build with GCC or Clang on x86-64).
-/// @def THYRIX_SIMD_AVX512_KERNEL
-/// As THYRIX_SIMD_AVX2_KERNEL, for AVX-512 (its foundation, AVX512F): Wide<double, 8> has only
-/// the comparisons of the one kernel that earns it (the broad phase's rows of overlaps).
-/// @def THYRIX_SIMD_AVX2_KERNEL
-/// The attributes of a kernel's AVX2 entry: compiled for AVX2 with everything it calls
-/// inlined into it (so that the kernel, a template compiled for the default target, and the
-/// AVX2 operations meet in one function compiled for AVX2).
+/// THYRIX_SIMD_AVX2_DISPATCH is defined where a kernel can also be compiled for AVX2 and chosen at
+/// run time (an optimized build with GCC or Clang on x86-64). THYRIX_SIMD_AVX512_KERNEL is as
+/// THYRIX_SIMD_AVX2_KERNEL, for AVX-512 (its foundation, AVX512F): Wide<double, 8> has only the
+/// comparisons of the one kernel that earns it (the broad phase's rows of overlaps).
+/// THYRIX_SIMD_AVX2_KERNEL holds the attributes of a kernel's AVX2 entry: compiled for AVX2 with
+/// everything it calls inlined into it (so that the kernel, a template compiled for the default
+/// target, and the AVX2 operations meet in one function compiled for AVX2).
 #include <Tools/ProcessorFeatures.h>
 
 #include <bit>
@@ -110,6 +107,7 @@ struct Wide {
   /// Lane @p i.
   [[nodiscard]] T at(int i) const { return lane[i]; }
 
+/// Defines `a op b` lane by lane, for the scalar definition's arithmetic operators.
 #define THYRIX_WIDE_LANEWISE(op)                                    \
   /** `a op b` in every lane. */                                    \
   friend Wide operator op(Wide a, Wide b) {                         \
