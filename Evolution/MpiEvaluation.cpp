@@ -33,8 +33,8 @@ constexpr std::size_t requestHead = 5;
 
 using Micros = std::chrono::microseconds;
 
-// Sleeps between two tests of a message: each wake-up costs the cores about 15 us of CPU time,
-// so a wait that may be long backs off from the shortest sleep to the longest.
+// Sleeps between two tests of a message: each wake-up from a sleep costs CPU time the episodes
+// need, so a wait that may be long backs off from the shortest sleep to the longest.
 constexpr Micros shortestPause(10);
 constexpr Micros longestPause(400);
 
@@ -212,8 +212,8 @@ void MpiEvaluation::distribute(const Batch& batch, std::size_t threads, std::spa
   };
   {
     // With one thread the leader runs its episodes on this thread, one at a time, and answers
-    // the other ranks between them: no thread of its own and no sleeps (a wake-up costs about
-    // 15 us of CPU time). With more, a thread of its own runs its chunks on the pool.
+    // the other ranks between them: no thread of its own and no sleeps, whose wake-ups would take
+    // CPU time from the episodes. With more, a thread of its own runs its chunks on the pool.
     bool localLeft = threads == 1;
     std::jthread local;
     if (!localLeft)

@@ -1,8 +1,8 @@
 /// @file BroadPhase.cpp
 /// @brief BroadPhase above smallCount boxes: the sweep or the grid (dense or hashed).
 #include <ThyrixLite/BroadPhase.h>
-#include <Tools/Wide.h>
 #include <Tools/Inlining.h>
+#include <Tools/Wide.h>
 
 #include <algorithm>
 #include <bit>

@@ -1,7 +1,7 @@
 #include <ThyrixLite/GaussSeidelSolver.h>
-#include <Tools/Wide.h>
 #include <Tools/Inlining.h>
 #include <Tools/ProcessorFeatures.h>
+#include <Tools/Wide.h>
 
 #include <algorithm>
 #include <cmath>

@@ -410,6 +410,9 @@ class Simulator : public World {
   /// Puts the pair's shapes in the narrow phase's order (the lower ShapeType first); false if
   /// they may not touch (both fixed, one collision group, or parts of one body kept apart).
   bool orderAndFilter(std::uint32_t& shapeA, std::uint32_t& shapeB) const;
+  /// The speculative margin of a pair in that order: a half-plane takes its shape's, two shapes
+  /// the smaller, and both add what they travelled in the last step.
+  real pairMargin(std::uint32_t shapeA, std::uint32_t shapeB) const;
   void addContacts(std::uint32_t shapeA, std::uint32_t shapeB);
   /// Two circles that addContacts would test exactly, as it would (A first).
   /// Plain numbers, no Vector2: a batch on the stack is then not zeroed at every detection

@@ -447,15 +447,21 @@ bool Simulator::orderAndFilter(std::uint32_t& shapeA, std::uint32_t& shapeB) con
          ownShapesMayTouch(multiBodies_[a.body], bodyStates_[a.body].firstShape, shapeA, shapeB);
 }
 
+real Simulator::pairMargin(std::uint32_t shapeA, std::uint32_t shapeB) const {
+  const ShapeGeometry& ga = geometry_[shapeA];
+  const ShapeGeometry& gb = geometry_[shapeB];
+  return (shapes_[shapeA].type == ShapeType::HalfPlane ? gb.margin
+                                                       : std::min(ga.margin, gb.margin)) +
+         ga.travel + gb.travel;
+}
+
 void Simulator::addContacts(std::uint32_t shapeA, std::uint32_t shapeB) {
   if (!orderAndFilter(shapeA, shapeB)) return;
   const Shape& a = shapes_[shapeA];
   const Shape& b = shapes_[shapeB];
   const ShapeGeometry& ga = geometry_[shapeA];
   const ShapeGeometry& gb = geometry_[shapeB];
-  const real margin =
-      (a.type == ShapeType::HalfPlane ? gb.margin : std::min(ga.margin, gb.margin)) + ga.travel +
-      gb.travel;
+  const real margin = pairMargin(shapeA, shapeB);
   const auto append = [&](const Manifold& manifold) { appendContacts(shapeA, shapeB, manifold); };
   switch (a.type) {
     case ShapeType::HalfPlane:
@@ -483,9 +489,7 @@ void Simulator::addContactsPlainly(std::uint32_t shapeA, std::uint32_t shapeB) {
   const Shape& b = shapes_[shapeB];
   const ShapeGeometry& ga = geometry_[shapeA];
   const ShapeGeometry& gb = geometry_[shapeB];
-  const real margin =
-      (a.type == ShapeType::HalfPlane ? gb.margin : std::min(ga.margin, gb.margin)) + ga.travel +
-      gb.travel;
+  const real margin = pairMargin(shapeA, shapeB);
   Manifold manifold;
   if (a.type == ShapeType::HalfPlane && b.type == ShapeType::Circle)
     manifold = collideHalfPlaneCircle(ga.p0, ga.p1, gb.p0, gb.radius, margin);

@@ -2,9 +2,9 @@
 /// @brief Phase 2 of a step, first part: the shapes' geometry and grid boxes (what moved).
 #include <ThyrixLite/Border.h>
 #include <ThyrixLite/Simulator.h>
-#include <Tools/Wide.h>
 #include <Tools/Inlining.h>
 #include <Tools/ProcessorFeatures.h>
+#include <Tools/Wide.h>
 
 #include <algorithm>
 #include <array>

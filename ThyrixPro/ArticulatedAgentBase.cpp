@@ -1,8 +1,8 @@
 #include <ThyrixLite/GUI.h>
 #include <ThyrixLite/InvalidArgument.h>
 #include <ThyrixLite/Simulator.h>
-#include <Tools/Wide.h>
 #include <ThyrixPro/ArticulatedAgentBase.h>
+#include <Tools/Wide.h>
 
 #include <algorithm>
 #include <bit>

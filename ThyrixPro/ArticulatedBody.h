@@ -8,8 +8,8 @@
 #include <ThyrixLite/ThyrixParameters.h>
 #include <ThyrixLite/Vector2.h>
 #include <ThyrixLite/Vector3.h>
-#include <Tools/Wide.h>
 #include <ThyrixPro/ArticulatedLink.h>
+#include <Tools/Wide.h>
 
 #include <bit>
 #include <cstddef>

@@ -223,6 +223,18 @@ TEST(Simulator, ContactListsFollowThePhasesRunByHand) {
   expectContactListsMatch(simulator);
 }
 
+/// One step of @p simulator through its public phases, in the users' guide's order.
+void stepByHand(Simulator& simulator) {
+  simulator.eraseContacts();
+  simulator.detectContacts();
+  simulator.indexContacts();
+  simulator.applyMouseForce();
+  simulator.computeDerivativesWithoutContacts();
+  simulator.solveContacts();
+  for (PhysicalObject& object : simulator.objects) object.control();
+  simulator.integrator().integrate(simulator, simulator.timestep());
+}
+
 // In a world of core shapes, advanceTime() lists the contacts after the solve: the objects
 // and their lists end each step as with the phases run by hand in their documented order.
 // (The pile starts in deep overlaps, which its first step, moving shapes farther than their
@@ -244,14 +256,7 @@ TEST_P(SimulatorTest, AdvanceTimeEndsAsThePhasesInOrder) {
     scenes::push(handBodies, {-1, 0});
     stepped.advanceTime();
     ASSERT_EQ(stepped.statistics().substeps, 1u) << "step " << step;
-    byHand.eraseContacts();
-    byHand.detectContacts();
-    byHand.indexContacts();
-    byHand.applyMouseForce();
-    byHand.computeDerivativesWithoutContacts();
-    byHand.solveContacts();
-    for (PhysicalObject& object : byHand.objects) object.control();
-    byHand.integrator().integrate(byHand, byHand.timestep());
+    stepByHand(byHand);
   }
   ASSERT_GE(stepped.contacts.size(), 64u);
   ASSERT_EQ(stepped.objects.size(), byHand.objects.size());
@@ -324,14 +329,7 @@ TEST_P(SimulatorTest, ListsReadAfterTheStepAreThoseOfPhaseThree) {
     scenes::push(handBodies, {-1, 0});
     stepped.advanceTime();
     ASSERT_EQ(stepped.statistics().substeps, 1u) << "step " << step;
-    byHand.eraseContacts();
-    byHand.detectContacts();
-    byHand.indexContacts();
-    byHand.applyMouseForce();
-    byHand.computeDerivativesWithoutContacts();
-    byHand.solveContacts();
-    for (PhysicalObject& object : byHand.objects) object.control();
-    byHand.integrator().integrate(byHand, byHand.timestep());
+    stepByHand(byHand);
     if (step % 33 != 0) continue;  // read now and then: each read lists that step's contacts
     expectSameContactLists(stepped, byHand);
     for (const PhysicalObject& object : stepped.objects)
